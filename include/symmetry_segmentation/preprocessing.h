@@ -1,0 +1,42 @@
+#pragma once
+// Scene preprocessing shared by every method: supporting plane (from the scene or RANSAC),
+// removal of points on or below it, voxel-grid downsampling with a map back to the input
+// points, and normals (estimated when missing, oriented toward the sensor).
+
+#include <vector>
+
+#include "symmetry_segmentation/scene.h"
+
+namespace symmetry_segmentation {
+
+struct PreprocessParams {
+  float voxel_size = 0.01f;              ///< Voxel-grid leaf size (m).
+  bool remove_table = true;              ///< Find the supporting plane and drop points on/below it.
+  float table_margin = 0.01f;            ///< Points closer than this above the plane are dropped (m).
+  float ransac_distance = 0.01f;         ///< RANSAC inlier distance when the plane is estimated (m).
+  int ransac_iterations = 500;
+  float normal_radius = 0.03f;           ///< Neighbourhood radius for normal estimation (m).
+  float max_range = 0.0f;                ///< Drop points farther than this from the sensor (0: keep all).
+};
+
+struct PreprocessedScene {
+  Cloud::Ptr cloud;                        ///< Downsampled object points with normals.
+  std::vector<int> input_to_voxel;         ///< Per input point: index into `cloud`, or -1 if dropped.
+  std::vector<std::vector<int>> voxel_to_input;  ///< Per downsampled point: its input points.
+  std::vector<int> kept_input_indices;     ///< Input points that survived (finite, above the table).
+  bool has_table = false;
+  PlaneCoefficients table_plane = PlaneCoefficients::Zero();  ///< Normal points away from the table top.
+  Eigen::Vector3f viewpoint = Eigen::Vector3f::Zero();         ///< Used to orient normals.
+};
+
+/// Throws InputError when nothing is left to segment (no finite point, all on the table).
+PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params);
+
+/// Estimates the dominant plane of `cloud` with RANSAC; returns false if none is found.
+bool estimateSupportingPlane(const Cloud& cloud, const PreprocessParams& params,
+                             PlaneCoefficients& plane);
+
+/// Expands per-downsampled-point indices to the input points they represent (sorted).
+std::vector<int> expandToInput(const PreprocessedScene& scene, const std::vector<int>& voxel_indices);
+
+}  // namespace symmetry_segmentation

@@ -1,0 +1,43 @@
+#pragma once
+// A tabletop scene as the core library sees it: a cloud (input order preserved), optional
+// occupancy, supporting plane, sensor origins and ground-truth labels.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+namespace octomap {
+class OcTree;
+}
+
+namespace symmetry_segmentation {
+
+using PointT = pcl::PointXYZRGBNormal;
+using Cloud = pcl::PointCloud<PointT>;
+
+/// Plane a*x + b*y + c*z + d = 0 with (a, b, c) of unit length.
+using PlaneCoefficients = Eigen::Vector4f;
+
+struct Scene {
+  std::string name;        ///< Directory or file base name, used in reports.
+  std::string kind;        ///< Scene kind (e.g. "clutter"); empty when unknown.
+  std::string cloud_path;  ///< File the cloud was read from.
+  Cloud::Ptr cloud;        ///< Every point of the file, in file order (may hold NaN points).
+  bool has_normals = false;
+  bool has_color = false;
+  /// Where the cloud was seen from (PCD VIEWPOINT, PLY camera element, scene_info.yaml).
+  std::vector<Eigen::Vector3f> sensor_origins;
+  std::shared_ptr<octomap::OcTree> occupancy;  ///< May be null: no map on disk.
+  std::optional<PlaneCoefficients> table_plane;
+  std::vector<int> labels;  ///< Ground truth per cloud point (0 = not an object); empty if none.
+
+  std::size_t size() const { return cloud ? cloud->size() : 0; }
+  bool hasLabels() const { return !labels.empty(); }
+};
+
+}  // namespace symmetry_segmentation

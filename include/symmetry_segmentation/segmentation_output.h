@@ -1,0 +1,37 @@
+#pragma once
+// Turning a segmentation into things a person can look at: a cloud coloured by segment
+// (written as PLY) and a PNG picture rendered from the sensor's side.
+
+#include <string>
+#include <vector>
+
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include "symmetry_segmentation/scene.h"
+#include "symmetry_segmentation/segmentation_result.h"
+
+namespace symmetry_segmentation {
+
+/// A distinct, reproducible colour for segment `index`.
+Eigen::Vector3i segmentColor(std::size_t index);
+
+/// Every input point, coloured by the first segment holding it; others keep a dimmed grey.
+pcl::PointCloud<pcl::PointXYZRGB> colorBySegment(const Cloud& cloud, const std::vector<Segment>& segments);
+
+void writeColoredPly(const pcl::PointCloud<pcl::PointXYZRGB>& cloud, const std::string& path);
+
+struct View {
+  Eigen::Vector3f eye;
+  Eigen::Vector3f target;
+  Eigen::Vector3f up;
+};
+
+/// A view from the scene's sensor (or from above the table) toward the segmented points.
+View defaultView(const Scene& scene, const std::vector<Segment>& segments);
+
+/// Z-buffered point splatting of `cloud` seen from `view`, written as an RGB PNG.
+void renderPng(const pcl::PointCloud<pcl::PointXYZRGB>& cloud, const View& view, const std::string& path,
+               int width = 960, int height = 720);
+
+}  // namespace symmetry_segmentation

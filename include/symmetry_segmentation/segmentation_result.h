@@ -1,0 +1,38 @@
+#pragma once
+// What every method returns: segments as indices into the input cloud (file order).
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace symmetry_segmentation {
+
+struct SymmetryPlane {
+  Eigen::Vector3f normal = Eigen::Vector3f::UnitX();  ///< Unit normal.
+  float distance = 0.0f;                              ///< Plane: normal . x + distance = 0.
+};
+
+struct SegmentScores {
+  float occlusion = 0.0f;
+  float smoothness = 0.0f;
+};
+
+struct Segment {
+  std::vector<int> indices;  ///< Sorted indices into the input cloud.
+  std::optional<SymmetryPlane> symmetry;
+  std::optional<SegmentScores> scores;
+};
+
+/// Stage name and wall time in milliseconds, in execution order; "total" last.
+using Timings = std::vector<std::pair<std::string, double>>;
+
+struct SegmentationResult {
+  std::size_t input_points = 0;
+  std::vector<Segment> segments;
+  Timings timing_ms;
+};
+
+}  // namespace symmetry_segmentation

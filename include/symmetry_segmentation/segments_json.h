@@ -1,0 +1,16 @@
+#pragma once
+// segments.json: {"input_points": N, "segments": [{"indices": [...], "symmetry": {...},
+// "scores": {...}}], "timing_ms": {...}}
+
+#include <string>
+
+#include "symmetry_segmentation/segmentation_result.h"
+
+namespace symmetry_segmentation {
+
+std::string toJson(const SegmentationResult& result);
+void writeSegmentsJson(const SegmentationResult& result, const std::string& path);
+/// Throws InputError on unreadable or malformed files.
+SegmentationResult readSegmentsJson(const std::string& path);
+
+}  // namespace symmetry_segmentation

@@ -1,0 +1,38 @@
+#include <algorithm>
+
+#include <pcl/search/kdtree.h>
+#include <pcl/segmentation/extract_clusters.h>
+
+#include "symmetry_segmentation/baseline_segmenters.h"
+#include "symmetry_segmentation/segment_order.h"
+#include "symmetry_segmentation/stopwatch.h"
+
+namespace symmetry_segmentation {
+
+SegmentationResult EuclideanSegmenter::segment(const Scene& scene) const {
+  Stopwatch total, stage;
+  SegmentationResult result;
+  result.input_points = scene.size();
+  const PreprocessedScene prepared = preprocess(scene, preprocessing_);
+  result.timing_ms.emplace_back("preprocess", stage.lap());
+
+  pcl::EuclideanClusterExtraction<PointT> extraction;
+  extraction.setClusterTolerance(params_.cluster_tolerance);
+  extraction.setMinClusterSize(std::max(1, params_.min_cluster_size));
+  extraction.setMaxClusterSize(params_.max_cluster_size);
+  extraction.setSearchMethod(std::make_shared<pcl::search::KdTree<PointT>>());
+  extraction.setInputCloud(prepared.cloud);
+  std::vector<pcl::PointIndices> clusters;
+  extraction.extract(clusters);
+  for (const auto& cluster : clusters) {
+    Segment segment;
+    segment.indices = expandToInput(prepared, cluster.indices);
+    result.segments.push_back(std::move(segment));
+  }
+  sortSegmentsBySize(result.segments);
+  result.timing_ms.emplace_back("clustering", stage.lap());
+  result.timing_ms.emplace_back("total", total.elapsedMs());
+  return result;
+}
+
+}  // namespace symmetry_segmentation

@@ -1,0 +1,148 @@
+// Preprocessing pipeline: finite points -> supporting plane -> points above it -> voxel grid
+// -> normals. Keeps the input<->voxel maps so every method reports on the input cloud.
+#include "symmetry_segmentation/preprocessing.h"
+
+#include <cmath>
+
+#include <pcl/features/normal_3d.h>
+#include <pcl/features/normal_3d_omp.h>
+#include <pcl/search/kdtree.h>
+
+#include "symmetry_segmentation/errors.h"
+#include "symmetry_segmentation/voxel_grid.h"
+
+namespace symmetry_segmentation {
+namespace {
+
+bool isFinitePoint(const PointT& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+
+Eigen::Vector3f chooseViewpoint(const Scene& scene, const std::vector<int>& finite) {
+  if (!scene.sensor_origins.empty()) {
+    Eigen::Vector3f mean = Eigen::Vector3f::Zero();
+    for (const auto& origin : scene.sensor_origins) mean += origin;
+    return mean / static_cast<float>(scene.sensor_origins.size());
+  }
+  // No sensor pose at all: the camera looked at the points from somewhere; the cloud's own
+  // origin (0,0,0 for camera-frame clouds) is the usual convention.
+  (void)finite;
+  return scene.cloud->sensor_origin_.head<3>();
+}
+
+// Orients the plane so that the sensor (or, without one, most of the points) is on its positive side.
+PlaneCoefficients orientPlane(PlaneCoefficients plane, const Scene& scene, const Cloud& coarse) {
+  float side = 0.0f;
+  if (!scene.sensor_origins.empty()) {
+    side = plane.head<3>().dot(scene.sensor_origins[0]) + plane[3];
+  } else {
+    for (const auto& p : coarse.points) side += (plane.head<3>().dot(p.getVector3fMap()) + plane[3]) > 0 ? 1.f : -1.f;
+  }
+  return side < 0.0f ? PlaneCoefficients(-plane) : plane;
+}
+
+// Fills in the normals that are missing (NaN), oriented toward the viewpoint.
+void estimateMissingNormals(Cloud& cloud, const Eigen::Vector3f& viewpoint, float radius) {
+  pcl::NormalEstimationOMP<PointT, pcl::Normal> estimator(2);
+  auto input = cloud.makeShared();
+  estimator.setInputCloud(input);
+  estimator.setSearchMethod(std::make_shared<pcl::search::KdTree<PointT>>());
+  estimator.setRadiusSearch(radius);
+  estimator.setViewPoint(viewpoint.x(), viewpoint.y(), viewpoint.z());
+  pcl::PointCloud<pcl::Normal> normals;
+  estimator.compute(normals);
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (std::isfinite(cloud.points[i].normal_x)) continue;  // keep the sensor's own normals
+    cloud.points[i].normal_x = normals.points[i].normal_x;
+    cloud.points[i].normal_y = normals.points[i].normal_y;
+    cloud.points[i].normal_z = normals.points[i].normal_z;
+    cloud.points[i].curvature = normals.points[i].curvature;
+  }
+}
+
+}  // namespace
+
+PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params) {
+  if (!scene.cloud || scene.cloud->empty()) throw InputError(scene.cloud_path, "cloud has zero points");
+  if (!(params.voxel_size > 0.0f)) throw InputError("preprocessing.voxel_size must be positive");
+  const Cloud& input = *scene.cloud;
+  PreprocessedScene out;
+
+  std::vector<int> finite;
+  finite.reserve(input.size());
+  for (std::size_t i = 0; i < input.size(); ++i) {
+    if (isFinitePoint(input.points[i])) finite.push_back(static_cast<int>(i));
+  }
+  if (finite.empty()) throw InputError(scene.cloud_path, "cloud has no finite points");
+  out.viewpoint = chooseViewpoint(scene, finite);
+  if (params.max_range > 0.0f) {
+    std::vector<int> in_range;
+    for (int i : finite) {
+      if ((input.points[i].getVector3fMap() - out.viewpoint).norm() <= params.max_range) in_range.push_back(i);
+    }
+    finite.swap(in_range);
+  }
+
+  if (params.remove_table) {
+    PlaneCoefficients plane;
+    const auto coarse = voxelDownsample(input, finite, std::max(params.voxel_size, 0.015f), false).cloud;
+    bool found = false;
+    if (scene.table_plane) {
+      plane = *scene.table_plane;
+      found = true;
+    } else {
+      found = estimateSupportingPlane(*coarse, params, plane);
+    }
+    if (found) {
+      out.has_table = true;
+      out.table_plane = orientPlane(plane, scene, *coarse);
+      std::vector<int> above;
+      above.reserve(finite.size());
+      for (int i : finite) {
+        const float distance = out.table_plane.head<3>().dot(input.points[i].getVector3fMap()) + out.table_plane[3];
+        if (distance > params.table_margin) above.push_back(i);
+      }
+      finite.swap(above);
+    }
+  }
+  if (finite.empty()) throw InputError(scene.cloud_path, "no points left above the supporting plane");
+  out.kept_input_indices = finite;
+
+  auto grid = voxelDownsample(input, finite, params.voxel_size, scene.has_normals);
+  out.cloud = grid.cloud;
+  out.voxel_to_input = std::move(grid.members);
+  out.input_to_voxel.assign(input.size(), -1);
+  for (std::size_t v = 0; v < out.voxel_to_input.size(); ++v) {
+    for (int i : out.voxel_to_input[v]) out.input_to_voxel[i] = static_cast<int>(v);
+  }
+
+  std::size_t missing_normals = 0;
+  for (const auto& p : out.cloud->points) {
+    if (!std::isfinite(p.normal_x)) ++missing_normals;
+  }
+  if (missing_normals > 0) {
+    estimateMissingNormals(*out.cloud, out.viewpoint, params.normal_radius);
+    // Isolated voxels get no estimate: face them toward the sensor rather than leave NaN.
+    for (auto& p : out.cloud->points) {
+      if (std::isfinite(p.normal_x) && std::isfinite(p.normal_y) && std::isfinite(p.normal_z)) continue;
+      Eigen::Vector3f toward = out.viewpoint - p.getVector3fMap();
+      if (toward.norm() < 1e-6f) toward = Eigen::Vector3f::UnitZ();
+      toward.normalize();
+      p.normal_x = toward.x();
+      p.normal_y = toward.y();
+      p.normal_z = toward.z();
+    }
+  }
+  return out;
+}
+
+std::vector<int> expandToInput(const PreprocessedScene& scene, const std::vector<int>& voxel_indices) {
+  std::vector<int> result;
+  for (int v : voxel_indices) {
+    const auto& members = scene.voxel_to_input.at(v);
+    result.insert(result.end(), members.begin(), members.end());
+  }
+  std::sort(result.begin(), result.end());
+  result.erase(std::unique(result.begin(), result.end()), result.end());
+  return result;
+}
+
+}  // namespace symmetry_segmentation

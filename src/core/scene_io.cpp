@@ -1,0 +1,123 @@
+// Scene directories: which files make a scene, and writing one back out.
+#include "symmetry_segmentation/scene_io.h"
+
+#include <fstream>
+#include <iomanip>
+
+#include <boost/filesystem.hpp>
+#include <octomap/OcTree.h>
+#include <pcl/io/ply_io.h>
+#include <yaml-cpp/yaml.h>
+
+namespace symmetry_segmentation {
+namespace fs = boost::filesystem;
+namespace {
+
+std::string firstExisting(const fs::path& dir, std::initializer_list<const char*> names) {
+  for (const char* name : names) {
+    boost::system::error_code ec;
+    if (fs::exists(dir / name, ec)) return (dir / name).string();
+  }
+  return {};
+}
+
+void loadSceneInfo(const std::string& path, Scene& scene) {
+  YAML::Node info;
+  try {
+    info = YAML::LoadFile(path);
+    if (info["kind"]) scene.kind = info["kind"].as<std::string>();
+    if (info["sensor_origins"]) {
+      std::vector<Eigen::Vector3f> origins;
+      for (const auto& origin : info["sensor_origins"]) {
+        const auto xyz = origin.as<std::vector<float>>();
+        if (xyz.size() != 3) throw InputError(path, "each sensor origin needs 3 numbers");
+        origins.emplace_back(xyz[0], xyz[1], xyz[2]);
+      }
+      scene.sensor_origins = origins;  // the generator's list is more complete than the PLY's one
+    }
+  } catch (const YAML::Exception& e) {
+    throw InputError(path, std::string("invalid YAML: ") + e.what());
+  }
+}
+
+}  // namespace
+
+Scene loadScene(const std::string& path, const SceneLoadOptions& options) {
+  Scene scene;
+  boost::system::error_code ec;
+  if (!fs::exists(path, ec)) throw InputError(path, "no such file or directory");
+  const fs::path scene_path(path);
+  if (!fs::is_directory(scene_path, ec)) {
+    scene.name = scene_path.stem().string();
+    loadCloudFile(path, scene);
+    return scene;
+  }
+
+  scene.name = fs::canonical(scene_path, ec).filename().string();
+  if (scene.name.empty()) scene.name = scene_path.filename().string();
+  const std::string cloud_path = firstExisting(scene_path, {"cloud.ply", "cloud.pcd"});
+  if (cloud_path.empty()) throw InputError(path, "scene directory has no cloud.ply or cloud.pcd");
+  loadCloudFile(cloud_path, scene);
+
+  const std::string info_path = firstExisting(scene_path, {"scene_info.yaml"});
+  if (!info_path.empty()) loadSceneInfo(info_path, scene);
+
+  if (options.load_occupancy) {
+    const std::string map_path = firstExisting(scene_path, {"occupancy.bt", "occupancy.ot"});
+    if (!map_path.empty()) scene.occupancy = loadOctomapFile(map_path);
+  }
+  const std::string plane_path = firstExisting(scene_path, {"table_plane.txt"});
+  if (!plane_path.empty()) scene.table_plane = loadPlaneFile(plane_path);
+  if (options.load_labels) {
+    const std::string labels_path = firstExisting(scene_path, {"labels.txt"});
+    if (!labels_path.empty()) scene.labels = loadLabelsFile(labels_path, scene.cloud->size());
+  }
+  return scene;
+}
+
+void saveScene(const Scene& scene, const std::string& directory) {
+  if (!scene.cloud || scene.cloud->empty()) throw InputError(directory, "refusing to save an empty scene");
+  boost::system::error_code ec;
+  fs::create_directories(directory, ec);
+  if (ec) throw InputError(directory, "cannot create directory: " + ec.message());
+  const fs::path dir(directory);
+
+  Cloud cloud = *scene.cloud;
+  if (!scene.sensor_origins.empty()) {
+    cloud.sensor_origin_ = Eigen::Vector4f(scene.sensor_origins[0].x(), scene.sensor_origins[0].y(),
+                                           scene.sensor_origins[0].z(), 0.0f);
+  }
+  const std::string cloud_path = (dir / "cloud.ply").string();
+  if (pcl::io::savePLYFileBinary(cloud_path, cloud) != 0) throw InputError(cloud_path, "cannot write cloud");
+
+  if (scene.occupancy) {
+    const std::string map_path = (dir / "occupancy.bt").string();
+    if (!scene.occupancy->writeBinaryConst(map_path)) throw InputError(map_path, "cannot write OctoMap");
+  }
+  if (scene.table_plane) {
+    std::ofstream plane((dir / "table_plane.txt").string());
+    plane << std::setprecision(9) << (*scene.table_plane)[0] << ' ' << (*scene.table_plane)[1] << ' '
+          << (*scene.table_plane)[2] << ' ' << (*scene.table_plane)[3] << '\n';
+  }
+  if (!scene.labels.empty()) {
+    if (scene.labels.size() != scene.cloud->size()) {
+      throw InputError(directory, "labels and cloud sizes differ");
+    }
+    std::ofstream labels((dir / "labels.txt").string());
+    for (int label : scene.labels) labels << label << '\n';
+    if (!labels) throw InputError((dir / "labels.txt").string(), "cannot write labels");
+  }
+
+  YAML::Emitter info;
+  info << YAML::BeginMap;
+  if (!scene.kind.empty()) info << YAML::Key << "kind" << YAML::Value << scene.kind;
+  info << YAML::Key << "sensor_origins" << YAML::Value << YAML::BeginSeq;
+  for (const auto& origin : scene.sensor_origins) {
+    info << YAML::Flow << std::vector<float>{origin.x(), origin.y(), origin.z()};
+  }
+  info << YAML::EndSeq << YAML::EndMap;
+  std::ofstream info_file((dir / "scene_info.yaml").string());
+  info_file << info.c_str() << '\n';
+}
+
+}  // namespace symmetry_segmentation
