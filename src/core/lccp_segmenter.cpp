@@ -21,14 +21,21 @@ SegmentationResult LccpSegmenter::segment(const Scene& scene) const {
   const PreprocessedScene prepared = preprocess(scene, preprocessing_);
   result.timing_ms.emplace_back("preprocess", stage.lap());
 
+  // PCL's supervoxels orient normals toward the coordinate origin, so work in a frame centred
+  // on the sensor, and hand over the oriented normals preprocessing already has.
+  const Eigen::Vector3f& sensor = prepared.viewpoint;
   auto points = std::make_shared<pcl::PointCloud<LccpPoint>>();
+  auto normals = std::make_shared<pcl::PointCloud<pcl::Normal>>();
   points->reserve(prepared.kept_input_indices.size());
+  normals->reserve(prepared.kept_input_indices.size());
   for (int index : prepared.kept_input_indices) {
     const auto& p = scene.cloud->points[index];
+    const auto& voxel = prepared.cloud->points[prepared.input_to_voxel[index]];
+    normals->push_back(pcl::Normal(voxel.normal_x, voxel.normal_y, voxel.normal_z));
     LccpPoint q;
-    q.x = p.x;
-    q.y = p.y;
-    q.z = p.z;
+    q.x = p.x - sensor.x();
+    q.y = p.y - sensor.y();
+    q.z = p.z - sensor.z();
     q.r = p.r;
     q.g = p.g;
     q.b = p.b;
@@ -39,6 +46,7 @@ SegmentationResult LccpSegmenter::segment(const Scene& scene) const {
   pcl::SupervoxelClustering<LccpPoint> supervoxels(params_.voxel_resolution, params_.seed_resolution);
   supervoxels.setUseSingleCameraTransform(false);
   supervoxels.setInputCloud(points);
+  supervoxels.setNormalCloud(normals);
   supervoxels.setColorImportance(params_.color_importance);
   supervoxels.setSpatialImportance(params_.spatial_importance);
   supervoxels.setNormalImportance(params_.normal_importance);

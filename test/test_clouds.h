@@ -1,0 +1,52 @@
+#pragma once
+// Small hand-built clouds with known geometry for unit tests.
+
+#include <Eigen/Core>
+
+#include "symmetry_segmentation/scene.h"
+
+namespace test_clouds {
+
+/// Points on the visible faces (top and four sides) of an axis-aligned box standing on z = 0,
+/// with outward normals, on a grid of `spacing`.
+inline void addBox(symmetry_segmentation::Cloud& cloud, const Eigen::Vector3f& min_corner,
+                   const Eigen::Vector3f& size, float spacing) {
+  auto add = [&](const Eigen::Vector3f& p, const Eigen::Vector3f& n) {
+    symmetry_segmentation::PointT q;
+    q.x = p.x(); q.y = p.y(); q.z = p.z();
+    q.normal_x = n.x(); q.normal_y = n.y(); q.normal_z = n.z();
+    q.r = q.g = q.b = 200;
+    cloud.push_back(q);
+  };
+  const Eigen::Vector3f max_corner = min_corner + size;
+  for (float a = min_corner.x(); a <= max_corner.x() + 1e-6f; a += spacing) {
+    for (float b = min_corner.y(); b <= max_corner.y() + 1e-6f; b += spacing) {
+      add({a, b, max_corner.z()}, Eigen::Vector3f::UnitZ());
+    }
+  }
+  for (float z = min_corner.z() + spacing; z < max_corner.z() - 1e-6f; z += spacing) {
+    for (float a = min_corner.x(); a <= max_corner.x() + 1e-6f; a += spacing) {
+      add({a, min_corner.y(), z}, -Eigen::Vector3f::UnitY());
+      add({a, max_corner.y(), z}, Eigen::Vector3f::UnitY());
+    }
+    for (float b = min_corner.y() + spacing; b < max_corner.y() - 1e-6f; b += spacing) {
+      add({min_corner.x(), b, z}, -Eigen::Vector3f::UnitX());
+      add({max_corner.x(), b, z}, Eigen::Vector3f::UnitX());
+    }
+  }
+}
+
+/// A square patch of the plane z = 0 centred on the origin.
+inline void addTable(symmetry_segmentation::Cloud& cloud, float half_extent, float spacing) {
+  for (float x = -half_extent; x <= half_extent + 1e-6f; x += spacing) {
+    for (float y = -half_extent; y <= half_extent + 1e-6f; y += spacing) {
+      symmetry_segmentation::PointT q;
+      q.x = x; q.y = y; q.z = 0.0f;
+      q.normal_x = 0; q.normal_y = 0; q.normal_z = 1;
+      q.r = q.g = q.b = 120;
+      cloud.push_back(q);
+    }
+  }
+}
+
+}  // namespace test_clouds

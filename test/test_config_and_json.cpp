@@ -1,0 +1,68 @@
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include "symmetry_segmentation/errors.h"
+#include "symmetry_segmentation/segmentation_config.h"
+#include "symmetry_segmentation/segments_json.h"
+#include "test_support.h"
+
+namespace ss = symmetry_segmentation;
+
+TEST(Config, DefaultFileMatchesBuiltInDefaults) {
+  const auto from_file = ss::loadConfigFile(test_support::sourceDir() + "/config/default.yaml");
+  const ss::SegmentationConfig built_in;
+  EXPECT_EQ(from_file.preprocessing.voxel_size, built_in.preprocessing.voxel_size);
+  EXPECT_EQ(from_file.lccp.concavity_tolerance, built_in.lccp.concavity_tolerance);
+  EXPECT_EQ(from_file.lccp.seed_resolution, built_in.lccp.seed_resolution);
+  EXPECT_EQ(from_file.euclidean.cluster_tolerance, built_in.euclidean.cluster_tolerance);
+  EXPECT_EQ(from_file.euclidean.min_cluster_size, built_in.euclidean.min_cluster_size);
+}
+
+TEST(Config, OverridesAndRejectsTypos) {
+  auto config = ss::configFromYaml(YAML::Load("lccp: {concavity_tolerance: 25}\neuclidean: {min_cluster_size: 7}"));
+  EXPECT_EQ(config.lccp.concavity_tolerance, 25.0f);
+  EXPECT_EQ(config.euclidean.min_cluster_size, 7);
+  ss::setConfigValue(config, "preprocessing.voxel_size", "0.02");
+  EXPECT_FLOAT_EQ(config.preprocessing.voxel_size, 0.02f);
+  EXPECT_THROW(ss::configFromYaml(YAML::Load("lccp: {concavity: 25}")), ss::InputError);
+  EXPECT_THROW(ss::configFromYaml(YAML::Load("lccp: {concavity_tolerance: abc}")), ss::InputError);
+  EXPECT_THROW(ss::configFromYaml(YAML::Load("[1, 2]")), ss::InputError);
+  EXPECT_THROW(ss::setConfigValue(config, "preprocessing.voxel_size", "-1"), ss::InputError);
+  EXPECT_THROW(ss::setConfigValue(config, "nosection", "1"), ss::InputError);
+  EXPECT_THROW(ss::loadConfigFile("/nonexistent/config.yaml"), ss::InputError);
+}
+
+TEST(SegmentsJson, RoundTripKeepsEverything) {
+  ss::SegmentationResult result;
+  result.input_points = 10;
+  ss::Segment plain;
+  plain.indices = {0, 3, 9};
+  ss::Segment with_plane;
+  with_plane.indices = {1, 2};
+  with_plane.symmetry = ss::SymmetryPlane{Eigen::Vector3f(0, 1, 0), -0.12f};
+  with_plane.scores = ss::SegmentScores{0.98f, 0.01f};
+  result.segments = {plain, with_plane};
+  result.timing_ms = {{"preprocess", 12.5}, {"total", 40.0}};
+  const std::string dir = test_support::makeTempDir("segments_json");
+  ss::writeSegmentsJson(result, dir + "/s.json");
+  const auto loaded = ss::readSegmentsJson(dir + "/s.json");
+  EXPECT_EQ(loaded.input_points, 10u);
+  ASSERT_EQ(loaded.segments.size(), 2u);
+  EXPECT_EQ(loaded.segments[0].indices, plain.indices);
+  EXPECT_FALSE(loaded.segments[0].symmetry.has_value());
+  ASSERT_TRUE(loaded.segments[1].symmetry.has_value());
+  EXPECT_FLOAT_EQ(loaded.segments[1].symmetry->distance, -0.12f);
+  EXPECT_FLOAT_EQ(loaded.segments[1].scores->occlusion, 0.98f);
+  ASSERT_EQ(loaded.timing_ms.size(), 2u);
+  EXPECT_EQ(loaded.timing_ms[1].first, "total");
+}
+
+TEST(SegmentsJson, MalformedFilesAreErrors) {
+  const std::string dir = test_support::makeTempDir("segments_json_bad");
+  for (const char* bad : {"{", "{\"segments\": []}", "{\"input_points\": 3, \"segments\": [{\"indices\": [5]}]}",
+                          "{\"input_points\": 3, \"segments\": [{\"indices\": \"x\"}]}"}) {
+    test_support::writeTextFile(dir + "/bad.json", bad);
+    EXPECT_THROW(ss::readSegmentsJson(dir + "/bad.json"), ss::InputError) << bad;
+  }
+  EXPECT_THROW(ss::readSegmentsJson(dir + "/missing.json"), ss::InputError);
+}

@@ -1,0 +1,111 @@
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "symmetry_segmentation/errors.h"
+#include "symmetry_segmentation/preprocessing.h"
+#include "symmetry_segmentation/voxel_grid.h"
+#include "test_clouds.h"
+
+namespace ss = symmetry_segmentation;
+
+namespace {
+
+ss::Scene tableWithBox(bool with_normals) {
+  ss::Scene scene;
+  scene.cloud = std::make_shared<ss::Cloud>();
+  test_clouds::addTable(*scene.cloud, 0.4f, 0.005f);
+  test_clouds::addBox(*scene.cloud, {0.0f, 0.0f, 0.0f}, {0.1f, 0.08f, 0.12f}, 0.004f);
+  if (!with_normals) {
+    for (auto& p : scene.cloud->points) p.normal_x = p.normal_y = p.normal_z = NAN;
+  }
+  scene.has_normals = with_normals;
+  scene.sensor_origins.push_back({0.5f, 0.5f, 0.8f});
+  return scene;
+}
+
+}  // namespace
+
+TEST(VoxelGrid, AveragesAndRemembersMembers) {
+  ss::Cloud cloud;
+  for (float x : {0.001f, 0.004f, 0.012f}) {
+    ss::PointT p;
+    p.x = x; p.y = 0.002f; p.z = 0.002f;
+    p.normal_x = 0; p.normal_y = 0; p.normal_z = 1;
+    cloud.push_back(p);
+  }
+  const auto grid = ss::voxelDownsample(cloud, {0, 1, 2}, 0.01f, true);
+  ASSERT_EQ(grid.cloud->size(), 2u);
+  EXPECT_EQ(grid.members[0], (std::vector<int>{0, 1}));
+  EXPECT_EQ(grid.members[1], (std::vector<int>{2}));
+  EXPECT_NEAR(grid.cloud->points[0].x, 0.0025f, 1e-6f);
+  EXPECT_NEAR(grid.cloud->points[0].normal_z, 1.0f, 1e-6f);
+  EXPECT_THROW(ss::voxelDownsample(cloud, {0}, 0.0f, true), ss::InputError);
+}
+
+TEST(Preprocessing, RemovesGivenTableAndMapsBackToInput) {
+  ss::Scene scene = tableWithBox(true);
+  scene.table_plane = ss::PlaneCoefficients(0, 0, -1, 0);  // sign must be fixed from the sensor side
+  const auto prepared = ss::preprocess(scene, ss::PreprocessParams{});
+  ASSERT_TRUE(prepared.has_table);
+  EXPECT_GT(prepared.table_plane[2], 0.99f);
+  ASSERT_EQ(prepared.input_to_voxel.size(), scene.cloud->size());
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < scene.cloud->size(); ++i) {
+    const int voxel = prepared.input_to_voxel[i];
+    if (voxel < 0) {
+      EXPECT_LE(scene.cloud->points[i].z, 0.0101f);
+      continue;
+    }
+    ++kept;
+    EXPECT_GT(scene.cloud->points[i].z, 0.01f);
+    const auto& centroid = prepared.cloud->points[voxel];
+    EXPECT_LT((centroid.getVector3fMap() - scene.cloud->points[i].getVector3fMap()).norm(), 0.0175f);
+  }
+  EXPECT_EQ(kept, prepared.kept_input_indices.size());
+  EXPECT_GT(kept, 1000u);
+  // The working cloud is the box only: ~1 cm voxels over its visible surface.
+  EXPECT_GT(prepared.cloud->size(), 100u);
+  EXPECT_LT(prepared.cloud->size(), 600u);
+}
+
+TEST(Preprocessing, FindsTableWithRansacAndOrientsEstimatedNormals) {
+  const ss::Scene scene = tableWithBox(false);
+  const auto prepared = ss::preprocess(scene, ss::PreprocessParams{});
+  ASSERT_TRUE(prepared.has_table);
+  EXPECT_NEAR(std::fabs(prepared.table_plane[2]), 1.0f, 0.01f);
+  EXPECT_NEAR(prepared.table_plane[3], 0.0f, 0.005f);
+  std::size_t facing_sensor = 0;
+  for (const auto& p : prepared.cloud->points) {
+    ASSERT_TRUE(std::isfinite(p.normal_x));
+    const Eigen::Vector3f to_sensor = scene.sensor_origins[0] - p.getVector3fMap();
+    if (p.getNormalVector3fMap().dot(to_sensor) > 0) ++facing_sensor;
+  }
+  EXPECT_EQ(facing_sensor, prepared.cloud->size());
+  // The top face's normals point up.
+  for (const auto& p : prepared.cloud->points) {
+    if (p.z > 0.115f && p.x > 0.02f && p.x < 0.08f && p.y > 0.02f && p.y < 0.06f) {
+      EXPECT_GT(p.normal_z, 0.9f);
+    }
+  }
+}
+
+TEST(Preprocessing, ExpandToInputGivesSortedUniqueIndices) {
+  const ss::Scene scene = tableWithBox(true);
+  const auto prepared = ss::preprocess(scene, ss::PreprocessParams{});
+  const auto all = ss::expandToInput(prepared, {1, 0, 1});
+  std::set<int> expected(prepared.voxel_to_input[0].begin(), prepared.voxel_to_input[0].end());
+  expected.insert(prepared.voxel_to_input[1].begin(), prepared.voxel_to_input[1].end());
+  EXPECT_EQ(all, std::vector<int>(expected.begin(), expected.end()));
+}
+
+TEST(Preprocessing, NothingAboveTheTableIsAnError) {
+  ss::Scene scene;
+  scene.cloud = std::make_shared<ss::Cloud>();
+  test_clouds::addTable(*scene.cloud, 0.3f, 0.01f);
+  scene.table_plane = ss::PlaneCoefficients(0, 0, 1, 0);
+  EXPECT_THROW(ss::preprocess(scene, ss::PreprocessParams{}), ss::InputError);
+  ss::PreprocessParams keep_table;
+  keep_table.remove_table = false;
+  EXPECT_GT(ss::preprocess(scene, keep_table).cloud->size(), 100u);
+}

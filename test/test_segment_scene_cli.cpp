@@ -1,0 +1,178 @@
+// segment_scene end to end: valid output on good scenes, one clear line and a non-zero exit
+// on every kind of bad input.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <boost/filesystem.hpp>
+#include <pcl/io/pcd_io.h>
+
+#include "symmetry_segmentation/scene_io.h"
+#include "symmetry_segmentation/segments_json.h"
+#include "test_clouds.h"
+#include "test_support.h"
+
+namespace ss = symmetry_segmentation;
+using test_support::runCommand;
+using test_support::toolPath;
+using test_support::writeTextFile;
+
+namespace {
+
+ss::Scene boxScene() {
+  ss::Scene scene;
+  scene.cloud = std::make_shared<ss::Cloud>();
+  test_clouds::addTable(*scene.cloud, 0.3f, 0.01f);
+  test_clouds::addBox(*scene.cloud, {0, 0, 0}, {0.1f, 0.1f, 0.1f}, 0.005f);
+  scene.has_normals = true;
+  scene.table_plane = ss::PlaneCoefficients(0, 0, 1, 0);
+  scene.sensor_origins.push_back({0, -0.6f, 0.6f});
+  return scene;
+}
+
+test_support::CommandResult segment(const std::string& scene, const std::string& output,
+                                    const std::string& extra = "--method euclidean") {
+  return runCommand(toolPath("segment_scene") + " '" + scene + "' --output '" + output + "' " + extra);
+}
+
+// The tool must fail with exit code 1 and one line naming `file` and containing `problem`.
+void expectInputError(const std::string& scene, const std::string& file, const std::string& problem) {
+  const std::string out = test_support::makeTempDir("cli_out_error");
+  const auto result = segment(scene, out);
+  EXPECT_EQ(result.exit_code, 1) << result.output;
+  EXPECT_NE(result.output.find(file), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find(problem), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("segment_scene: error: "), std::string::npos) << result.output;
+  EXPECT_FALSE(boost::filesystem::exists(out + "/segments.json"));
+}
+
+std::string truncatedCopy(const std::string& source, const std::string& target, double keep) {
+  const std::string whole = test_support::readTextFile(source);
+  writeTextFile(target, whole.substr(0, static_cast<std::size_t>(whole.size() * keep)));
+  return target;
+}
+
+void expectValidOutput(const std::string& scene_path, const std::string& out) {
+  const auto result = segment(scene_path, out, "--method euclidean");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const ss::Scene scene = ss::loadScene(scene_path, {false, false});
+  const auto segments = ss::readSegmentsJson(out + "/segments.json");  // also checks index range
+  EXPECT_EQ(segments.input_points, scene.size());
+  EXPECT_FALSE(segments.segments.empty());
+  for (const auto& segment : segments.segments) {
+    EXPECT_TRUE(std::is_sorted(segment.indices.begin(), segment.indices.end()));
+    for (int i : segment.indices) EXPECT_TRUE(std::isfinite(scene.cloud->points[i].z));
+  }
+  EXPECT_GT(boost::filesystem::file_size(out + "/segments.ply"), 1000u);
+  EXPECT_GT(boost::filesystem::file_size(out + "/segments.png"), 1000u);
+  EXPECT_NE(result.output.find("total"), std::string::npos);
+}
+
+}  // namespace
+
+TEST(SegmentSceneCli, SegmentsAHandBuiltScene) {
+  const std::string dir = test_support::makeTempDir("cli_good_scene");
+  ss::saveScene(boxScene(), dir + "/scene");
+  expectValidOutput(dir + "/scene", dir + "/out");
+  const auto result = ss::readSegmentsJson(dir + "/out/segments.json");
+  ASSERT_EQ(result.segments.size(), 1u);  // the box, without the table
+  EXPECT_GT(result.segments[0].indices.size(), 1000u);
+}
+
+TEST(SegmentSceneCli, CommandLineErrorsExitWithTwo) {
+  EXPECT_EQ(runCommand(toolPath("segment_scene")).exit_code, 2);
+  EXPECT_EQ(runCommand(toolPath("segment_scene") + " scene").exit_code, 2);  // no --output
+  EXPECT_EQ(runCommand(toolPath("segment_scene") + " a --output o --bogus").exit_code, 2);
+  EXPECT_EQ(runCommand(toolPath("segment_scene") + " a --output o --set nonsense").exit_code, 2);
+  const auto help = runCommand(toolPath("segment_scene") + " --help");
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.output.find("--method"), std::string::npos);
+}
+
+TEST(SegmentSceneCli, BadConfigurationIsReported) {
+  const std::string dir = test_support::makeTempDir("cli_bad_config");
+  ss::saveScene(boxScene(), dir + "/scene");
+  auto result = segment(dir + "/scene", dir + "/out", "--method nonexistent");
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_NE(result.output.find("unknown method 'nonexistent'"), std::string::npos) << result.output;
+  writeTextFile(dir + "/bad.yaml", "lccp:\n  concavity_tolerence: 3\n");
+  result = segment(dir + "/scene", dir + "/out", "--config " + dir + "/bad.yaml");
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_NE(result.output.find("bad.yaml: unknown parameter 'lccp.concavity_tolerence'"), std::string::npos)
+      << result.output;
+  result = segment(dir + "/scene", dir + "/out", "--set euclidean.cluster_tolerance=-1");
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_NE(result.output.find("cluster_tolerance"), std::string::npos) << result.output;
+}
+
+TEST(SegmentSceneCli, EveryBadInputGivesOneClearLine) {
+  const std::string dir = test_support::makeTempDir("cli_bad_inputs");
+  ss::saveScene(boxScene(), dir + "/good");
+  const std::string good_ply = dir + "/good/cloud.ply";
+
+  expectInputError(dir + "/missing", dir + "/missing", "no such file or directory");
+  expectInputError(dir + "/missing.pcd", dir + "/missing.pcd", "no such file");
+
+  boost::filesystem::create_directories(dir + "/empty_dir");
+  expectInputError(dir + "/empty_dir", "empty_dir", "no cloud.ply or cloud.pcd");
+
+  boost::filesystem::create_directories(dir + "/dir_cloud/cloud.ply");  // unreadable as a file
+  expectInputError(dir + "/dir_cloud", "cloud.ply", "is a directory");
+
+  if (geteuid() != 0) {  // root reads anything
+    boost::filesystem::create_directories(dir + "/no_permission");
+    boost::filesystem::copy_file(good_ply, dir + "/no_permission/cloud.ply");
+    boost::filesystem::permissions(dir + "/no_permission/cloud.ply", boost::filesystem::no_perms);
+    expectInputError(dir + "/no_permission", "cloud.ply", "cannot open");
+  }
+
+  boost::filesystem::create_directories(dir + "/truncated_ply");
+  truncatedCopy(good_ply, dir + "/truncated_ply/cloud.ply", 0.5);
+  expectInputError(dir + "/truncated_ply", "truncated_ply/cloud.ply", "truncated");
+
+  boost::filesystem::create_directories(dir + "/corrupt_ply");
+  writeTextFile(dir + "/corrupt_ply/cloud.ply", "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\n"
+                                                "end_header\nhello world\n");
+  expectInputError(dir + "/corrupt_ply", "corrupt_ply/cloud.ply", "PLY");
+  writeTextFile(dir + "/not_a.ply", "this is not a ply file\n");
+  expectInputError(dir + "/not_a.ply", "not_a.ply", "not a PLY file");
+
+  const auto box = boxScene();
+  pcl::io::savePCDFileBinary(dir + "/binary.pcd", *box.cloud);
+  truncatedCopy(dir + "/binary.pcd", dir + "/truncated.pcd", 0.6);
+  expectInputError(dir + "/truncated.pcd", "truncated.pcd", "truncated");
+  writeTextFile(dir + "/corrupt.pcd", "# .PCD v0.7\nVERSION 0.7\nFIELDS x y z\nWIDTH banana\n");
+  expectInputError(dir + "/corrupt.pcd", "corrupt.pcd", "PCD");
+
+  writeTextFile(dir + "/zero.pcd",
+                "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 0\nHEIGHT 1\n"
+                "POINTS 0\nDATA ascii\n");
+  expectInputError(dir + "/zero.pcd", "zero.pcd", "zero points");
+  writeTextFile(dir + "/nan.pcd",
+                "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 2\nHEIGHT 1\n"
+                "POINTS 2\nDATA ascii\nnan nan nan\nnan 1 nan\n");
+  expectInputError(dir + "/nan.pcd", "nan.pcd", "no finite points");
+
+  boost::filesystem::create_directories(dir + "/bad_map");
+  boost::filesystem::copy_file(good_ply, dir + "/bad_map/cloud.ply");
+  writeTextFile(dir + "/bad_map/occupancy.bt", "# Octomap OcTree binary file\nid OcTree\nsize 4\nres 0.01\ndata\n");
+  expectInputError(dir + "/bad_map", "bad_map/occupancy.bt", "OctoMap");
+
+  boost::filesystem::create_directories(dir + "/bad_labels");
+  boost::filesystem::copy_file(good_ply, dir + "/bad_labels/cloud.ply");
+  writeTextFile(dir + "/bad_labels/labels.txt", "0\n1\n");
+  expectInputError(dir + "/bad_labels", "bad_labels/labels.txt", "has 2 labels but the cloud has");
+
+  boost::filesystem::create_directories(dir + "/bad_plane");
+  boost::filesystem::copy_file(good_ply, dir + "/bad_plane/cloud.ply");
+  writeTextFile(dir + "/bad_plane/table_plane.txt", "0 0 1\n");
+  expectInputError(dir + "/bad_plane", "bad_plane/table_plane.txt", "expected 4 numbers");
+}
+
+TEST(SegmentSceneCli, RealScenesWhenSharedDataExists) {
+  if (!test_support::haveSharedData()) GTEST_SKIP() << "no ../shared/data";
+  const std::string out = test_support::makeTempDir("cli_real");
+  expectValidOutput(test_support::sharedDataDir() + "/real/kinfu_tabletop", out + "/kinfu");
+  for (const char* name : {"milk_cartoon_all_small_clorox", "table_scene_mug_stereo_textured"}) {
+    expectValidOutput(test_support::sharedDataDir() + "/real/kinect_single_view/" + name + ".pcd", out + "/" + name);
+  }
+}
