@@ -1,0 +1,18 @@
+#pragma once
+// Locating evaluation inputs on disk: labelled scene directories and stored segments.json files.
+
+#include <string>
+#include <vector>
+
+namespace symmetry_segmentation {
+
+/// Each argument is a scene directory (one holding labels.txt) or a parent directory whose
+/// subdirectories holding labels.txt are scenes (sorted by name). Throws InputError naming the
+/// argument when it does not exist or yields no labelled scene.
+std::vector<std::string> findSceneDirectories(const std::vector<std::string>& arguments);
+
+/// `directory`/<scene>/segments.json, else `directory`/<scene>.json. Throws InputError when
+/// neither exists.
+std::string findSegmentsFile(const std::string& directory, const std::string& scene_name);
+
+}  // namespace symmetry_segmentation
