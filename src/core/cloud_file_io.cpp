@@ -5,6 +5,7 @@
 
 #include <boost/filesystem.hpp>
 #include <pcl/PCLPointCloud2.h>
+#include <pcl/console/print.h>
 #include <pcl/conversions.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/io/ply_io.h>
@@ -95,10 +96,24 @@ void readPly(const std::string& path, pcl::PCLPointCloud2& cloud, Eigen::Vector4
   }
 }
 
+// PCL warns on stderr about every field a file lacks (no normals, unhandled camera
+// properties); those are expected here and drown the one-line errors users need to see.
+class QuietPclWarnings {
+ public:
+  QuietPclWarnings() : saved_(pcl::console::getVerbosityLevel()) {
+    pcl::console::setVerbosityLevel(pcl::console::L_ERROR);
+  }
+  ~QuietPclWarnings() { pcl::console::setVerbosityLevel(saved_); }
+
+ private:
+  pcl::console::VERBOSITY_LEVEL saved_;
+};
+
 }  // namespace
 
 void loadCloudFile(const std::string& path, Scene& scene) {
   checkReadableFile(path);
+  const QuietPclWarnings quiet;
   const std::string ext = lowerExtension(path);
   pcl::PCLPointCloud2 raw;
   Eigen::Vector4f origin = Eigen::Vector4f::Zero();
