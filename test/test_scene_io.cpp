@@ -126,4 +126,14 @@ TEST(SceneIo, OctomapFilesAreValidated) {
     EXPECT_THROW(ss::loadOctomapFile(dir + "/garbage" + ext), ss::InputError) << ext;
   }
   EXPECT_THROW(ss::loadOctomapFile(dir + "/missing.bt"), ss::InputError);
+
+  octomap::OcTree empty(0.02);
+  ASSERT_TRUE(empty.writeBinaryConst(dir + "/empty.bt"));
+  const auto loaded_empty = ss::loadOctomapFile(dir + "/empty.bt");
+  EXPECT_EQ(loaded_empty->size(), 0u);
+  EXPECT_DOUBLE_EQ(loaded_empty->getResolution(), 0.02);
+  writeTextFile(dir + "/color.bt", "# Octomap OcTree binary file\nid ColorOcTree\nsize 1\nres 0.01\ndata\n");
+  EXPECT_THROW(ss::loadOctomapFile(dir + "/color.bt"), ss::InputError);
+  writeTextFile(dir + "/badres.bt", "# Octomap OcTree binary file\nid OcTree\nsize 1\nres -1\ndata\n");
+  EXPECT_THROW(ss::loadOctomapFile(dir + "/badres.bt"), ss::InputError);
 }

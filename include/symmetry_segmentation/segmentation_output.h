@@ -30,8 +30,12 @@ struct View {
 /// A view from the scene's sensor (or from above the table) toward the segmented points.
 View defaultView(const Scene& scene, const std::vector<Segment>& segments);
 
-/// Z-buffered point splatting of `cloud` seen from `view`, written as an RGB PNG.
+/// Z-buffered point splatting of `cloud` seen from `view`, written as an RGB PNG. The picture
+/// is framed on the points `focus` indexes (every point when empty).
 void renderPng(const pcl::PointCloud<pcl::PointXYZRGB>& cloud, const View& view, const std::string& path,
-               int width = 960, int height = 720);
+               const std::vector<int>& focus = {}, int width = 960, int height = 720);
+
+/// The input points held by any segment, for framing pictures on the objects.
+std::vector<int> segmentedPoints(const std::vector<Segment>& segments);
 
 }  // namespace symmetry_segmentation

@@ -35,6 +35,39 @@ void checkStreamComplete(const std::string& path, const std::istream& stream) {
   if (stream.fail()) throw InputError(path, "truncated OctoMap data");
 }
 
+// The .bt header ("# Octomap OcTree binary file", "id OcTree", "size N", "res R", "data"),
+// parsed here because OctoMap's own reader chats on stderr and accepts nonsense resolutions.
+std::shared_ptr<octomap::OcTree> readBinaryTree(const std::string& path, std::istream& stream) {
+  std::string line, id;
+  double resolution = 0.0;
+  long long size = -1;
+  bool have_data = false;
+  for (int i = 0; i < 100 && std::getline(stream, line); ++i) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    std::string key;
+    fields >> key;
+    if (key == "id") {
+      fields >> id;
+    } else if (key == "size") {
+      fields >> size;
+    } else if (key == "res") {
+      fields >> resolution;
+    } else if (key == "data") {
+      have_data = true;
+      break;
+    }
+  }
+  if (!have_data) throw InputError(path, "corrupt OctoMap header (no 'data' line)");
+  if (id != "OcTree") throw InputError(path, "unsupported OctoMap tree type '" + id + "' (expected OcTree)");
+  if (!(resolution > 0.0) || !std::isfinite(resolution)) throw InputError(path, "OctoMap resolution must be positive");
+  if (size < 0) throw InputError(path, "corrupt OctoMap header (no valid 'size' line)");
+  auto tree = std::make_shared<octomap::OcTree>(resolution);
+  if (size > 0) tree->readBinaryData(stream);  // an empty map has no data at all
+  return tree;
+}
+
 }  // namespace
 
 std::shared_ptr<octomap::OcTree> loadOctomapFile(const std::string& path) {
@@ -46,8 +79,7 @@ std::shared_ptr<octomap::OcTree> loadOctomapFile(const std::string& path) {
     if (!startsWith(content, "# Octomap OcTree binary file")) {
       throw InputError(path, "not a binary OctoMap file (bad header)");
     }
-    auto tree = std::make_shared<octomap::OcTree>(0.1);
-    if (!tree->readBinary(stream)) throw InputError(path, "corrupt or truncated OctoMap data");
+    auto tree = readBinaryTree(path, stream);
     checkStreamComplete(path, stream);
     return tree;
   }

@@ -87,8 +87,16 @@ View defaultView(const Scene& scene, const std::vector<Segment>& segments) {
   return view;
 }
 
+std::vector<int> segmentedPoints(const std::vector<Segment>& segments) {
+  std::vector<int> all;
+  for (const auto& segment : segments) all.insert(all.end(), segment.indices.begin(), segment.indices.end());
+  std::sort(all.begin(), all.end());
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  return all;
+}
+
 void renderPng(const pcl::PointCloud<pcl::PointXYZRGB>& cloud, const View& view, const std::string& path,
-               int width, int height) {
+               const std::vector<int>& focus, int width, int height) {
   Eigen::Vector3f forward = view.target - view.eye;
   if (forward.norm() < 1e-6f) forward = Eigen::Vector3f::UnitZ();
   forward.normalize();
@@ -97,20 +105,28 @@ void renderPng(const pcl::PointCloud<pcl::PointXYZRGB>& cloud, const View& view,
   right.normalize();
   const Eigen::Vector3f down = forward.cross(right);
 
-  // Fit the focal length so every point in front of the camera is in the picture.
   std::vector<Eigen::Vector3f> camera_points(cloud.size(), Eigen::Vector3f::Constant(-1));
-  float max_x = 1e-3f, max_y = 1e-3f;
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     const auto& p = cloud.points[i];
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) continue;
     const Eigen::Vector3f d = p.getVector3fMap() - view.eye;
     const Eigen::Vector3f c(d.dot(right), d.dot(down), d.dot(forward));
-    if (c.z() <= 0.05f) continue;
-    camera_points[i] = c;
+    if (c.z() > 0.05f) camera_points[i] = c;
+  }
+  // Fit the focal length so every focus point in front of the camera is in the picture.
+  float max_x = 1e-3f, max_y = 1e-3f;
+  auto fit = [&](std::size_t i) {
+    const Eigen::Vector3f& c = camera_points[i];
+    if (c.z() <= 0.0f) return;
     max_x = std::max(max_x, std::fabs(c.x() / c.z()));
     max_y = std::max(max_y, std::fabs(c.y() / c.z()));
+  };
+  if (focus.empty()) {
+    for (std::size_t i = 0; i < cloud.size(); ++i) fit(i);
+  } else {
+    for (int i : focus) if (i >= 0 && static_cast<std::size_t>(i) < cloud.size()) fit(static_cast<std::size_t>(i));
   }
-  const float focal = 0.95f * std::min(0.5f * width / max_x, 0.5f * height / max_y);
+  const float focal = 0.9f * std::min(0.5f * width / max_x, 0.5f * height / max_y);
   std::vector<float> depth(static_cast<std::size_t>(width) * height, std::numeric_limits<float>::max());
   std::vector<unsigned char> image(depth.size() * 3, 255);
   const float splat_metres = 0.004f;

@@ -116,7 +116,9 @@ int main(int argc, char** argv) {
     ss::writeSegmentsJson(result, json_path);
     const auto colored = ss::colorBySegment(*scene.cloud, result.segments);
     ss::writeColoredPly(colored, ply_path);
-    if (options.png) ss::renderPng(colored, ss::defaultView(scene, result.segments), png_path);
+    if (options.png) {
+      ss::renderPng(colored, ss::defaultView(scene, result.segments), png_path, ss::segmentedPoints(result.segments));
+    }
 
     std::cout << "scene " << scene.name << ": " << scene.size() << " points, method " << segmenter->name() << ", "
               << result.segments.size() << " segments\n"
