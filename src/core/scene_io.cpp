@@ -92,7 +92,10 @@ void saveScene(const Scene& scene, const std::string& directory) {
 
   if (scene.occupancy) {
     const std::string map_path = (dir / "occupancy.bt").string();
-    if (!scene.occupancy->writeBinaryConst(map_path)) throw InputError(map_path, "cannot write OctoMap");
+    std::ofstream map_file(map_path, std::ios::binary);  // the stream overload does not chat on stderr
+    if (!map_file || !scene.occupancy->writeBinaryConst(map_file) || !map_file.flush()) {
+      throw InputError(map_path, "cannot write OctoMap");
+    }
   }
   if (scene.table_plane) {
     std::ofstream plane((dir / "table_plane.txt").string());
