@@ -16,6 +16,25 @@ TEST(Config, DefaultFileMatchesBuiltInDefaults) {
   EXPECT_EQ(from_file.lccp.seed_resolution, built_in.lccp.seed_resolution);
   EXPECT_EQ(from_file.euclidean.cluster_tolerance, built_in.euclidean.cluster_tolerance);
   EXPECT_EQ(from_file.euclidean.min_cluster_size, built_in.euclidean.min_cluster_size);
+  EXPECT_EQ(from_file.symmetry.cut.dmax, built_in.symmetry.cut.dmax);
+  EXPECT_EQ(from_file.symmetry.cut.sigma_concave_deg, built_in.symmetry.cut.sigma_concave_deg);
+  EXPECT_EQ(from_file.symmetry.detection.max_tangent_angle_deg, built_in.symmetry.detection.max_tangent_angle_deg);
+  EXPECT_EQ(from_file.symmetry.filter.s_occl, built_in.symmetry.filter.s_occl);
+  EXPECT_EQ(from_file.symmetry.refinement.icp_iterations, built_in.symmetry.refinement.icp_iterations);
+}
+
+TEST(Config, PresetsSetTheFilterThresholds) {
+  const auto high_recall = ss::loadConfigFile(test_support::sourceDir() + "/config/high_recall.yaml");
+  EXPECT_FLOAT_EQ(high_recall.symmetry.filter.s_occl, 0.97f);
+  EXPECT_FLOAT_EQ(high_recall.symmetry.filter.s_smooth, 0.05f);
+  const auto balanced = ss::loadConfigFile(test_support::sourceDir() + "/config/balanced.yaml");
+  EXPECT_FLOAT_EQ(balanced.symmetry.filter.s_occl, 0.99f);
+  EXPECT_FLOAT_EQ(balanced.symmetry.filter.s_smooth, 0.02f);
+  ss::SegmentationConfig config;
+  ss::setConfigValue(config, "symmetry.filter.s_occl", "0.5");
+  EXPECT_FLOAT_EQ(config.symmetry.filter.s_occl, 0.5f);
+  EXPECT_THROW(ss::setConfigValue(config, "symmetry.cut.dbuf", "0.001"), ss::InputError);  // below dmax
+  EXPECT_THROW(ss::configFromYaml(YAML::Load("symmetry: {filter: {s_ocl: 1}}")), ss::InputError);
 }
 
 TEST(Config, OverridesAndRejectsTypos) {

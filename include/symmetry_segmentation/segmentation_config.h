@@ -4,6 +4,7 @@
 #include <string>
 
 #include "symmetry_segmentation/preprocessing.h"
+#include "symmetry_segmentation/symmetry/symmetry_params.h"
 
 namespace YAML {
 class Node;
@@ -35,13 +36,16 @@ struct SegmentationConfig {
   PreprocessParams preprocessing;
   EuclideanParams euclidean;
   LccpParams lccp;
+  SymmetryParams symmetry;
 };
 
-/// Defaults overridden by whatever `node` sets; unknown keys throw InputError.
+/// Defaults overridden by whatever `node` sets (nested maps, e.g. symmetry: {filter: {s_occl: 0.97}});
+/// unknown keys throw InputError.
 SegmentationConfig configFromYaml(const YAML::Node& node);
 /// Throws InputError (naming the file) on unreadable files, bad YAML or unknown keys.
 SegmentationConfig loadConfigFile(const std::string& path);
-/// Sets one "section.key" to a value given as text, e.g. ("lccp.concavity_tolerance", "15").
+/// Sets one dotted key to a value given as text, e.g. ("lccp.concavity_tolerance", "15") or
+/// ("symmetry.filter.s_occl", "0.97").
 void setConfigValue(SegmentationConfig& config, const std::string& key, const std::string& value);
 
 }  // namespace symmetry_segmentation

@@ -29,10 +29,14 @@ struct Segment {
 /// Stage name and wall time in milliseconds, in execution order; "total" last.
 using Timings = std::vector<std::pair<std::string, double>>;
 
+/// Named counts a method reports about its run (e.g. hypotheses, segments before filtering).
+using Counts = std::vector<std::pair<std::string, std::size_t>>;
+
 struct SegmentationResult {
   std::size_t input_points = 0;
   std::vector<Segment> segments;
   Timings timing_ms;
+  Counts counts;
 };
 
 }  // namespace symmetry_segmentation

@@ -16,25 +16,28 @@ namespace {
 
 bool isFinitePoint(const PointT& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
-Eigen::Vector3f chooseViewpoint(const Scene& scene, const std::vector<int>& finite) {
-  if (!scene.sensor_origins.empty()) {
-    Eigen::Vector3f mean = Eigen::Vector3f::Zero();
-    for (const auto& origin : scene.sensor_origins) mean += origin;
-    return mean / static_cast<float>(scene.sensor_origins.size());
-  }
-  // No sensor pose at all: the camera looked at the points from somewhere; the cloud's own
-  // origin (0,0,0 for camera-frame clouds) is the usual convention.
-  (void)finite;
-  return scene.cloud->sensor_origin_.head<3>();
+// Where normals are oriented toward: the mean sensor origin (a fused scene's cameras all look
+// at the objects from above the table), else the cloud's own origin (0,0,0 for camera-frame
+// clouds, the usual convention).
+Eigen::Vector3f chooseViewpoint(const Scene& scene) {
+  if (scene.sensor_origins.empty()) return scene.cloud->sensor_origin_.head<3>();
+  Eigen::Vector3f mean = Eigen::Vector3f::Zero();
+  for (const auto& origin : scene.sensor_origins) mean += origin;
+  return mean / static_cast<float>(scene.sensor_origins.size());
 }
 
-// Orients the plane so that the sensor (or, without one, most of the points) is on its positive side.
-PlaneCoefficients orientPlane(PlaneCoefficients plane, const Scene& scene, const Cloud& coarse) {
+// Orients the plane so that the sensors (or, without any, most off-plane points) are on its
+// positive side. Points on the plane are left out of the vote: their side is noise.
+PlaneCoefficients orientPlane(PlaneCoefficients plane, const Scene& scene, const Eigen::Vector3f& viewpoint,
+                              const Cloud& coarse, float on_plane_distance) {
   float side = 0.0f;
   if (!scene.sensor_origins.empty()) {
-    side = plane.head<3>().dot(scene.sensor_origins[0]) + plane[3];
+    side = plane.head<3>().dot(viewpoint) + plane[3];
   } else {
-    for (const auto& p : coarse.points) side += (plane.head<3>().dot(p.getVector3fMap()) + plane[3]) > 0 ? 1.f : -1.f;
+    for (const auto& p : coarse.points) {
+      const float distance = plane.head<3>().dot(p.getVector3fMap()) + plane[3];
+      if (std::fabs(distance) > on_plane_distance) side += distance > 0 ? 1.f : -1.f;
+    }
   }
   return side < 0.0f ? PlaneCoefficients(-plane) : plane;
 }
@@ -72,7 +75,7 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
     if (isFinitePoint(input.points[i])) finite.push_back(static_cast<int>(i));
   }
   if (finite.empty()) throw InputError(scene.cloud_path, "cloud has no finite points");
-  out.viewpoint = chooseViewpoint(scene, finite);
+  out.viewpoint = chooseViewpoint(scene);
   if (params.max_range > 0.0f) {
     std::vector<int> in_range;
     for (int i : finite) {
@@ -93,7 +96,7 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
     }
     if (found) {
       out.has_table = true;
-      out.table_plane = orientPlane(plane, scene, *coarse);
+      out.table_plane = orientPlane(plane, scene, out.viewpoint, *coarse, params.ransac_distance);
       std::vector<int> above;
       above.reserve(finite.size());
       for (int i : finite) {

@@ -20,6 +20,13 @@ Setter field(Section SegmentationConfig::*section, T Section::*member) {
   };
 }
 
+template <typename T, typename Part>
+Setter symmetryField(Part SymmetryParams::*part, T Part::*member) {
+  return [part, member](SegmentationConfig& config, const YAML::Node& value) {
+    config.symmetry.*part.*member = value.as<T>();
+  };
+}
+
 const std::map<std::string, Setter>& setters() {
   using C = SegmentationConfig;
   static const std::map<std::string, Setter> table = {
@@ -44,6 +51,28 @@ const std::map<std::string, Setter>& setters() {
       {"lccp.use_extended_convexity", field(&C::lccp, &LccpParams::use_extended_convexity)},
       {"lccp.use_sanity_criterion", field(&C::lccp, &LccpParams::use_sanity_criterion)},
       {"lccp.min_points", field(&C::lccp, &LccpParams::min_points)},
+      {"symmetry.threads", field(&C::symmetry, &SymmetryParams::threads)},
+#define SYMSEG_DETECTION(name) {"symmetry.detection." #name, symmetryField(&SymmetryParams::detection, &SymmetryDetectionParams::name)}
+      SYMSEG_DETECTION(supervoxel_voxel), SYMSEG_DETECTION(supervoxel_seed), SYMSEG_DETECTION(merge_normal_angle_deg),
+      SYMSEG_DETECTION(boundary_radius), SYMSEG_DETECTION(curve_link_radius), SYMSEG_DETECTION(min_curve_points),
+      SYMSEG_DETECTION(tangent_half_window), SYMSEG_DETECTION(max_tangent_angle_deg),
+      SYMSEG_DETECTION(min_match_distance), SYMSEG_DETECTION(max_match_distance),
+      SYMSEG_DETECTION(mean_shift_angle_deg), SYMSEG_DETECTION(mean_shift_distance),
+      SYMSEG_DETECTION(min_plane_support), SYMSEG_DETECTION(merge_plane_angle_deg),
+      SYMSEG_DETECTION(merge_plane_distance), SYMSEG_DETECTION(max_hypotheses),
+#undef SYMSEG_DETECTION
+#define SYMSEG_CUT(name) {"symmetry.cut." #name, symmetryField(&SymmetryParams::cut, &SymmetryCutParams::name)}
+      SYMSEG_CUT(dmax), SYMSEG_CUT(alpha_min_deg), SYMSEG_CUT(alpha_max_deg), SYMSEG_CUT(dbuf),
+      SYMSEG_CUT(sigma_convex_deg), SYMSEG_CUT(sigma_concave_deg), SYMSEG_CUT(lambda_smooth),
+      SYMSEG_CUT(lambda_sym), SYMSEG_CUT(neighbours),
+#undef SYMSEG_CUT
+#define SYMSEG_REFINE(name) {"symmetry.refinement." #name, symmetryField(&SymmetryParams::refinement, &SymmetryRefinementParams::name)}
+      SYMSEG_REFINE(enabled), SYMSEG_REFINE(icp_iterations), SYMSEG_REFINE(icp_max_correspondence),
+#undef SYMSEG_REFINE
+#define SYMSEG_FILTER(name) {"symmetry.filter." #name, symmetryField(&SymmetryParams::filter, &SymmetryFilterParams::name)}
+      SYMSEG_FILTER(s_occl), SYMSEG_FILTER(s_smooth), SYMSEG_FILTER(smooth_normal_angle_deg),
+      SYMSEG_FILTER(min_segment_points), SYMSEG_FILTER(duplicate_overlap),
+#undef SYMSEG_FILTER
   };
   return table;
 }
@@ -58,6 +87,18 @@ void applyValue(SegmentationConfig& config, const std::string& key, const YAML::
   }
 }
 
+// Nested maps become dotted keys: symmetry: {filter: {s_occl: x}} sets "symmetry.filter.s_occl".
+void applyMap(SegmentationConfig& config, const std::string& prefix, const YAML::Node& map) {
+  for (const auto& entry : map) {
+    const std::string key = prefix + "." + entry.first.as<std::string>();
+    if (entry.second.IsMap()) {
+      applyMap(config, key, entry.second);
+    } else {
+      applyValue(config, key, entry.second);
+    }
+  }
+}
+
 void validate(const SegmentationConfig& config) {
   if (!(config.preprocessing.voxel_size > 0.0f)) throw InputError("preprocessing.voxel_size must be > 0");
   if (!(config.preprocessing.normal_radius > 0.0f)) throw InputError("preprocessing.normal_radius must be > 0");
@@ -65,6 +106,20 @@ void validate(const SegmentationConfig& config) {
   if (!(config.lccp.voxel_resolution > 0.0f) || !(config.lccp.seed_resolution > config.lccp.voxel_resolution)) {
     throw InputError("lccp needs 0 < voxel_resolution < seed_resolution");
   }
+  const auto& sym = config.symmetry;
+  if (!(sym.detection.supervoxel_voxel > 0.0f) || !(sym.detection.supervoxel_seed > sym.detection.supervoxel_voxel)) {
+    throw InputError("symmetry.detection needs 0 < supervoxel_voxel < supervoxel_seed");
+  }
+  if (!(sym.detection.mean_shift_angle_deg > 0.0f) || !(sym.detection.mean_shift_distance > 0.0f)) {
+    throw InputError("symmetry.detection mean-shift bandwidths must be > 0");
+  }
+  if (!(sym.cut.dmax > 0.0f) || !(sym.cut.dbuf > sym.cut.dmax)) throw InputError("symmetry.cut needs 0 < dmax < dbuf");
+  if (!(sym.cut.alpha_min_deg < sym.cut.alpha_max_deg)) throw InputError("symmetry.cut needs alpha_min_deg < alpha_max_deg");
+  if (!(sym.cut.sigma_convex_deg > 0.0f) || !(sym.cut.sigma_concave_deg > 0.0f)) {
+    throw InputError("symmetry.cut sigmas must be > 0");
+  }
+  if (sym.cut.neighbours < 1 || sym.cut.neighbours > 50) throw InputError("symmetry.cut.neighbours must be in [1, 50]");
+  if (sym.threads < 0) throw InputError("symmetry.threads must be >= 0");
 }
 
 }  // namespace
@@ -76,9 +131,7 @@ SegmentationConfig configFromYaml(const YAML::Node& node) {
   for (const auto& section : node) {
     const std::string section_name = section.first.as<std::string>();
     if (!section.second.IsMap()) throw InputError("configuration section '" + section_name + "' must be a map");
-    for (const auto& entry : section.second) {
-      applyValue(config, section_name + "." + entry.first.as<std::string>(), entry.second);
-    }
+    applyMap(config, section_name, section.second);
   }
   validate(config);
   return config;

@@ -29,7 +29,13 @@ std::string toJson(const SegmentationResult& result) {
   }
   Json timing = Json::object();
   for (const auto& [stage, ms] : result.timing_ms) timing[stage] = ms;
-  out << "],\n \"timing_ms\": " << timing.dump() << "}\n";
+  out << "],\n \"timing_ms\": " << timing.dump();
+  if (!result.counts.empty()) {
+    Json counts = Json::object();
+    for (const auto& [name, count] : result.counts) counts[name] = count;
+    out << ",\n \"counts\": " << counts.dump();
+  }
+  out << "}\n";
   return out.str();
 }
 
@@ -67,6 +73,9 @@ SegmentationResult readSegmentsJson(const std::string& path) {
                                        entry["scores"].at("smoothness").get<float>()};
       }
       result.segments.push_back(std::move(segment));
+    }
+    if (json.contains("counts")) {
+      for (const auto& [name, count] : json["counts"].items()) result.counts.emplace_back(name, count.get<std::size_t>());
     }
     if (json.contains("timing_ms")) {
       for (const auto& [stage, ms] : json["timing_ms"].items()) result.timing_ms.emplace_back(stage, ms.get<double>());

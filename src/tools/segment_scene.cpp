@@ -122,7 +122,13 @@ int main(int argc, char** argv) {
 
     std::cout << "scene " << scene.name << ": " << scene.size() << " points, method " << segmenter->name() << ", "
               << result.segments.size() << " segments\n"
-              << "time: " << formatTimings(result.timing_ms) << "\n"
+              << "time: " << formatTimings(result.timing_ms) << "\n";
+    if (!result.counts.empty()) {
+      std::cout << "counts:";
+      for (const auto& [name, count] : result.counts) std::cout << ' ' << name << ' ' << count;
+      std::cout << "\n";
+    }
+    std::cout
               << "wrote " << json_path << ", " << ply_path << (options.png ? ", " + png_path : "") << "\n";
     return 0;
   } catch (const std::exception& e) {

@@ -1,0 +1,50 @@
+#include "symmetry_segmentation/symmetry/segment_filter.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace symmetry_segmentation {
+
+bool passesFilter(const CandidateSegment& segment, const SymmetryFilterParams& params) {
+  return static_cast<int>(segment.points.size()) >= params.min_segment_points &&
+         segment.scores.occlusion > params.s_occl && segment.scores.smoothness < params.s_smooth;
+}
+
+float overlapOfSmaller(const std::vector<int>& a, const std::vector<int>& b) {
+  if (a.empty() || b.empty()) return 0.0f;
+  std::size_t common = 0;
+  for (auto i = a.begin(), j = b.begin(); i != a.end() && j != b.end();) {
+    if (*i < *j) {
+      ++i;
+    } else if (*j < *i) {
+      ++j;
+    } else {
+      ++common;
+      ++i;
+      ++j;
+    }
+  }
+  return static_cast<float>(common) / static_cast<float>(std::min(a.size(), b.size()));
+}
+
+std::vector<CandidateSegment> removeDuplicates(std::vector<CandidateSegment> segments,
+                                               const SymmetryFilterParams& params) {
+  std::vector<std::size_t> order(segments.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const auto& x = segments[a];
+    const auto& y = segments[b];
+    if (x.scores.smoothness != y.scores.smoothness) return x.scores.smoothness < y.scores.smoothness;
+    return x.points.size() > y.points.size();
+  });
+  std::vector<CandidateSegment> kept;
+  for (std::size_t index : order) {
+    const bool duplicate = std::any_of(kept.begin(), kept.end(), [&](const CandidateSegment& k) {
+      return overlapOfSmaller(k.points, segments[index].points) > params.duplicate_overlap;
+    });
+    if (!duplicate) kept.push_back(std::move(segments[index]));
+  }
+  return kept;
+}
+
+}  // namespace symmetry_segmentation

@@ -1,0 +1,64 @@
+#include <gtest/gtest.h>
+
+#include <atomic>
+
+#include "symmetry_segmentation/parallel_for.h"
+#include "symmetry_segmentation/symmetry/segment_filter.h"
+
+namespace ss = symmetry_segmentation;
+
+namespace {
+
+ss::CandidateSegment candidate(int begin, int end, float occlusion, float smoothness) {
+  ss::CandidateSegment segment;
+  for (int i = begin; i < end; ++i) segment.points.push_back(i);
+  segment.scores = ss::SegmentScores{occlusion, smoothness};
+  return segment;
+}
+
+}  // namespace
+
+TEST(SegmentFilter, ThresholdsAreStrict) {
+  ss::SymmetryFilterParams params;
+  params.s_occl = 0.9f;
+  params.s_smooth = 0.05f;
+  params.min_segment_points = 10;
+  EXPECT_TRUE(ss::passesFilter(candidate(0, 10, 0.95f, 0.01f), params));
+  EXPECT_FALSE(ss::passesFilter(candidate(0, 9, 0.95f, 0.01f), params));   // too small
+  EXPECT_FALSE(ss::passesFilter(candidate(0, 10, 0.9f, 0.01f), params));   // occlusion not above
+  EXPECT_FALSE(ss::passesFilter(candidate(0, 10, 0.95f, 0.05f), params));  // smoothness not below
+}
+
+TEST(SegmentFilter, OverlapOfSmaller) {
+  EXPECT_FLOAT_EQ(ss::overlapOfSmaller({1, 2, 3, 4}, {3, 4}), 1.0f);
+  EXPECT_FLOAT_EQ(ss::overlapOfSmaller({1, 2, 3, 4}, {4, 5, 6, 7}), 0.25f);
+  EXPECT_FLOAT_EQ(ss::overlapOfSmaller({}, {1}), 0.0f);
+}
+
+TEST(SegmentFilter, DuplicatesKeepTheCleanestBoundary) {
+  ss::SymmetryFilterParams params;
+  params.duplicate_overlap = 0.7f;
+  const auto kept = ss::removeDuplicates(
+      {candidate(0, 100, 1.0f, 0.010f),    // object A
+       candidate(5, 100, 1.0f, 0.005f),    // object A again, cleaner boundary: wins
+       candidate(200, 300, 1.0f, 0.02f),   // object B
+       candidate(80, 220, 1.0f, 0.001f)},  // straddles A and B, overlapping each by < 0.7
+      params);
+  ASSERT_EQ(kept.size(), 3u);
+  EXPECT_EQ(kept[0].points.front(), 80);
+  EXPECT_EQ(kept[1].points.front(), 5);
+  EXPECT_EQ(kept[2].points.front(), 200);
+}
+
+TEST(ParallelFor, EveryIndexOnceAndExceptionsPropagate) {
+  for (int threads : {1, 2, 4}) {
+    std::vector<int> hits(1000, 0);
+    ss::parallelFor(hits.size(), threads, [&](std::size_t i) { hits[i] += 1; });
+    EXPECT_EQ(std::count(hits.begin(), hits.end(), 1), 1000) << threads;
+  }
+  EXPECT_THROW(ss::parallelFor(100, 2, [](std::size_t i) { if (i == 37) throw std::runtime_error("x"); }),
+               std::runtime_error);
+  std::atomic<int> calls{0};
+  ss::parallelFor(0, 2, [&](std::size_t) { ++calls; });
+  EXPECT_EQ(calls.load(), 0);
+}
