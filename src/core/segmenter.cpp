@@ -2,17 +2,18 @@
 
 #include "symmetry_segmentation/baseline_segmenters.h"
 #include "symmetry_segmentation/errors.h"
+#include "symmetry_segmentation/symmetry/symmetry_segmenter.h"
 
 namespace symmetry_segmentation {
 
-std::vector<std::string> availableMethods() { return {"euclidean", "lccp"}; }
+std::vector<std::string> availableMethods() { return {"symmetry", "euclidean", "lccp"}; }
 
-// LCCP until the symmetry method lands: it is the stronger of the two baselines in clutter.
-std::string defaultMethod() { return "lccp"; }
+std::string defaultMethod() { return "symmetry"; }
 
 std::unique_ptr<Segmenter> makeSegmenter(const std::string& method, const SegmentationConfig& config) {
   if (method == "euclidean") return std::make_unique<EuclideanSegmenter>(config.preprocessing, config.euclidean);
   if (method == "lccp") return std::make_unique<LccpSegmenter>(config.preprocessing, config.lccp);
+  if (method == "symmetry") return std::make_unique<SymmetrySegmenter>(config.preprocessing, config.symmetry);
   std::string known;
   for (const auto& name : availableMethods()) known += (known.empty() ? "" : ", ") + name;
   throw InputError("unknown method '" + method + "' (available: " + known + ")");

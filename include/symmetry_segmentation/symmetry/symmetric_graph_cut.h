@@ -1,0 +1,67 @@
+#pragma once
+// Stage 3 and the stage-5 scores: for one symmetry plane, which working-cloud points belong to
+// the symmetric object (graph cut, paper eq. 7-12), and how plausible a segment is (eq. 13-14).
+// The kd-tree, the smoothness graph and the point grid for reflection queries are built once per
+// scene and shared by every hypothesis;
+// segment() and scores() are const and safe to call from several threads.
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <Eigen/Geometry>
+#include <pcl/kdtree/kdtree_flann.h>
+
+#include "symmetry_segmentation/occupancy.h"
+#include "symmetry_segmentation/scene.h"
+#include "symmetry_segmentation/segmentation_result.h"
+#include "symmetry_segmentation/symmetry/point_grid.h"
+#include "symmetry_segmentation/symmetry/reflection_data_term.h"
+#include "symmetry_segmentation/symmetry/symmetry_params.h"
+
+namespace symmetry_segmentation {
+
+class SymmetricGraphCut {
+ public:
+  /// `cloud`: working cloud with oriented normals; `occupancy`: the scene's map (must outlive
+  /// this object); `table_plane`: the supporting plane, oriented toward the objects, if known.
+  SymmetricGraphCut(Cloud::ConstPtr cloud, const OccupancyMap& occupancy,
+                    std::optional<PlaneCoefficients> table_plane, const SymmetryCutParams& params);
+
+  /// Foreground working-cloud indices (sorted) for `plane`.
+  std::vector<int> segment(const SymmetryPlane& plane) const;
+
+  /// Occlusion score (fraction of segment points whose reflection does not land in free space)
+  /// and smoothness score (broken smooth links per segment point).
+  SegmentScores scores(const std::vector<int>& segment, const SymmetryPlane& plane,
+                       const SymmetryFilterParams& filter) const;
+
+  /// The unary evidence of one point for `plane` (eq. 7-10; see reflection_data_term.h).
+  ReflectionEvidence dataTerm(int index, const SymmetryPlane& plane) const;
+
+  const Cloud& cloud() const { return *cloud_; }
+  const pcl::KdTreeFLANN<PointT>& tree() const { return tree_; }
+  /// k-NN smoothness neighbours of each point (the graph's edges, each listed from both ends).
+  const std::vector<std::vector<int>>& neighbours() const { return neighbours_; }
+
+ private:
+  Cloud::ConstPtr cloud_;
+  const OccupancyMap& occupancy_;
+  std::optional<PlaneCoefficients> table_plane_;
+  SymmetryCutParams params_;
+  pcl::KdTreeFLANN<PointT> tree_;
+  std::vector<std::vector<int>> neighbours_;
+
+  struct SmoothLink {
+    int a = 0;
+    int b = 0;
+    float weight = 0.0f;  ///< eq. 11, lambda_smooth included.
+  };
+  std::vector<SmoothLink> smooth_links_;  ///< Each undirected k-NN link once (a < b).
+  Eigen::AlignedBox3f cloud_box_;         ///< Lets far reflections skip the grid.
+  PointGrid grid_;                        ///< Reflection queries (faster than tree_ for them).
+
+  ReflectionDataTerm dataTermView() const;
+};
+
+}  // namespace symmetry_segmentation

@@ -1,0 +1,37 @@
+#pragma once
+// Stage 2: candidate symmetry planes from pairs of curves, clustered by mean shift.
+
+#include <vector>
+
+#include "symmetry_segmentation/segmentation_result.h"
+#include "symmetry_segmentation/symmetry/normal_edge_curves.h"
+
+namespace symmetry_segmentation {
+
+struct SymmetryHypothesis {
+  SymmetryPlane plane;  ///< Canonical sign (canonicalPlane).
+  int support = 0;      ///< Matched point pairs behind it.
+};
+
+/// A plane sample for mean shift, with its weight.
+struct PlaneSample {
+  SymmetryPlane plane;
+  float weight = 1.0f;
+};
+
+/// Modes of the samples under a kernel on normal angle and offset difference, strongest first.
+/// Each mode carries the summed weight of the samples that converged to it. Deterministic.
+std::vector<SymmetryHypothesis> meanShiftPlanes(const std::vector<PlaneSample>& samples, float angle_bandwidth_deg,
+                                                float distance_bandwidth);
+
+/// One-to-one point matches between two curves (or a curve and itself) whose reflected tangents
+/// agree; returns the plane of each surviving pair.
+std::vector<PlaneSample> matchCurvePair(const Cloud& cloud, const Curve& a, const Curve& b,
+                                        const SymmetryDetectionParams& params);
+
+/// Stage 2 over all curve pairs: per pair the mean-shift plane, then near-equal planes merged.
+/// Strongest first, at most params.max_hypotheses.
+std::vector<SymmetryHypothesis> detectSymmetryHypotheses(const Cloud& cloud, const std::vector<Curve>& curves,
+                                                         const SymmetryDetectionParams& params);
+
+}  // namespace symmetry_segmentation

@@ -1,0 +1,53 @@
+// Stage 2: the mean-shift modes of each curve pair's matched point pairs, then near-equal
+// planes of different pairs merged, their support added up.
+#include "symmetry_segmentation/symmetry/symmetry_hypotheses.h"
+
+#include <algorithm>
+
+#include "curve_geometry.h"
+
+namespace symmetry_segmentation {
+namespace {
+
+// A mode of one curve pair needs this many matches to be evidence at all. The evidence for one
+// plane is often spread over several short curves (an edge of a small box at 1 cm resolution
+// has ~10 points), so params.min_plane_support applies to the merged support instead.
+constexpr int kMinPairModeSupport = 3;
+
+}  // namespace
+
+std::vector<SymmetryHypothesis> detectSymmetryHypotheses(const Cloud& cloud, const std::vector<Curve>& curves,
+                                                         const SymmetryDetectionParams& params) {
+  std::vector<CurveGeometry> geometry;
+  geometry.reserve(curves.size());
+  for (const Curve& curve : curves) geometry.emplace_back(cloud, curve);
+
+  const int pair_minimum = std::min(kMinPairModeSupport, params.min_plane_support);
+  std::vector<PlaneSample> pair_planes;
+  for (std::size_t a = 0; a < geometry.size(); ++a) {
+    for (std::size_t b = a; b < geometry.size(); ++b) {
+      const auto samples = matchCurveGeometry(geometry[a], geometry[b], a == b, params);
+      if (static_cast<int>(samples.size()) < pair_minimum) continue;
+      // A pair may hold several planes (a long curve runs around a box top), so keep every mode.
+      for (const auto& mode : meanShiftPlanes(samples, params.mean_shift_angle_deg, params.mean_shift_distance)) {
+        if (mode.support < pair_minimum) break;  // Strongest first.
+        PlaneSample plane;
+        plane.plane = mode.plane;
+        plane.weight = static_cast<float>(mode.support);
+        pair_planes.push_back(plane);
+      }
+    }
+  }
+
+  auto merged = meanShiftPlanes(pair_planes, params.merge_plane_angle_deg, params.merge_plane_distance);
+  const auto weak = std::find_if(merged.begin(), merged.end(), [&](const SymmetryHypothesis& h) {
+    return h.support < params.min_plane_support;
+  });
+  merged.erase(weak, merged.end());
+  if (params.max_hypotheses >= 0 && static_cast<int>(merged.size()) > params.max_hypotheses) {
+    merged.resize(params.max_hypotheses);
+  }
+  return merged;
+}
+
+}  // namespace symmetry_segmentation

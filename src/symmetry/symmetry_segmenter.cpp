@@ -1,0 +1,85 @@
+#include "symmetry_segmentation/symmetry/symmetry_segmenter.h"
+
+#include "symmetry_segmentation/occupancy.h"
+#include "symmetry_segmentation/parallel_for.h"
+#include "symmetry_segmentation/preprocessing.h"
+#include "symmetry_segmentation/segment_order.h"
+#include "symmetry_segmentation/stopwatch.h"
+#include "symmetry_segmentation/symmetry/normal_edge_curves.h"
+#include "symmetry_segmentation/symmetry/plane_refinement.h"
+#include "symmetry_segmentation/symmetry/segment_filter.h"
+#include "symmetry_segmentation/symmetry/symmetric_graph_cut.h"
+#include "symmetry_segmentation/symmetry/symmetry_hypotheses.h"
+
+namespace symmetry_segmentation {
+
+SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
+  Stopwatch total, stage;
+  SegmentationResult result;
+  result.input_points = scene.size();
+  const PreprocessedScene prepared = preprocess(scene, preprocessing_);
+  result.timing_ms.emplace_back("preprocess", stage.lap());
+
+  RayCastOptions ray_cast;
+  ray_cast.resolution = preprocessing_.voxel_size;
+  const OccupancyMap occupancy = occupancyForScene(scene, ray_cast);
+  result.timing_ms.emplace_back("occupancy", stage.lap());
+
+  const Cloud& cloud = *prepared.cloud;
+  const auto curves = extractNormalEdgeCurves(cloud, params_.detection);
+  result.timing_ms.emplace_back("curves", stage.lap());
+  const auto hypotheses = detectSymmetryHypotheses(cloud, curves, params_.detection);
+  result.timing_ms.emplace_back("hypotheses", stage.lap());
+
+  std::optional<PlaneCoefficients> table;
+  if (prepared.has_table) table = prepared.table_plane;
+  const SymmetricGraphCut graph(prepared.cloud, occupancy, table, params_.cut);
+  result.timing_ms.emplace_back("graph", stage.lap());
+
+  // Hypotheses are independent; results are stored by index, so any thread count gives the
+  // same answer.
+  std::vector<CandidateSegment> candidates(hypotheses.size());
+  parallelFor(hypotheses.size(), params_.threads, [&](std::size_t i) {
+    candidates[i].plane = hypotheses[i].plane;
+    candidates[i].points = graph.segment(hypotheses[i].plane);
+  });
+  result.timing_ms.emplace_back("graph_cut", stage.lap());
+
+  parallelFor(candidates.size(), params_.threads, [&](std::size_t i) {
+    CandidateSegment& candidate = candidates[i];
+    if (static_cast<int>(candidate.points.size()) < params_.filter.min_segment_points) return;
+    candidate.plane = refinePlane(cloud, candidate.points, candidate.plane, params_.refinement, params_.detection);
+    if (params_.refinement.enabled) candidate.points = graph.segment(candidate.plane);
+    candidate.scores = graph.scores(candidate.points, candidate.plane, params_.filter);
+  });
+  result.timing_ms.emplace_back("refinement", stage.lap());
+
+  std::vector<CandidateSegment> passing;
+  std::size_t non_empty = 0;
+  for (auto& candidate : candidates) {
+    if (static_cast<int>(candidate.points.size()) >= params_.filter.min_segment_points) ++non_empty;
+    if (passesFilter(candidate, params_.filter)) passing.push_back(std::move(candidate));
+  }
+  const std::size_t passed_filter = passing.size();
+  const auto kept = removeDuplicates(std::move(passing), params_.filter);
+  for (const auto& candidate : kept) {
+    Segment segment;
+    segment.indices = expandToInput(prepared, candidate.points);
+    segment.symmetry = candidate.plane;
+    segment.scores = candidate.scores;
+    result.segments.push_back(std::move(segment));
+  }
+  sortSegmentsBySize(result.segments);
+  result.timing_ms.emplace_back("filtering", stage.lap());
+  result.timing_ms.emplace_back("total", total.elapsedMs());
+
+  result.counts = {{"working_points", cloud.size()},
+                   {"curves", curves.size()},
+                   {"hypotheses", hypotheses.size()},
+                   {"segments_before_filtering", non_empty},
+                   {"segments_after_filtering", passed_filter},
+                   {"segments_after_deduplication", result.segments.size()}};
+  return result;
+}
+
+}  // namespace symmetry_segmentation
