@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
+
 #include <boost/filesystem.hpp>
 #include <pcl/io/pcd_io.h>
 
@@ -166,6 +168,33 @@ TEST(SegmentSceneCli, EveryBadInputGivesOneClearLine) {
   boost::filesystem::copy_file(good_ply, dir + "/bad_plane/cloud.ply");
   writeTextFile(dir + "/bad_plane/table_plane.txt", "0 0 1\n");
   expectInputError(dir + "/bad_plane", "bad_plane/table_plane.txt", "expected 4 numbers");
+}
+
+// Headers that claim billions of points once crashed segment_scene (32-bit size overflow in
+// PCL) or made it allocate and clear ~720 MB for half a minute. Under a 3 GB address-space cap
+// and a 20 s timeout each must end in one error line and exit code 1.
+TEST(SegmentSceneCli, HostileCloudHeadersFailFastInBoundedMemory) {
+  const std::string dir = test_support::makeTempDir("cli_hostile_headers");
+  const std::string pcd_fields = "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\n";
+  writeTextFile(dir + "/overflow.pcd", pcd_fields + "WIDTH 2147483648\nHEIGHT 2147483648\nPOINTS 0\nDATA binary\n" +
+                                           std::string(64, '\0'));
+  writeTextFile(dir + "/claims.pcd", pcd_fields + "WIDTH 60000000\nHEIGHT 1\nPOINTS 60000000\nDATA binary\n" +
+                                         std::string(1000, '\1'));
+  writeTextFile(dir + "/claims.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 60000000\n"
+                                     "property float x\nproperty float y\nproperty float z\nend_header\n" +
+                                         std::string(1000, '\1'));
+  std::string ascii = "ply\nformat ascii 1.0\nelement vertex 60000000\nproperty float x\nproperty float y\n"
+                      "property float z\nend_header\n";
+  for (int i = 0; i < 60; ++i) ascii += "0 0 1\n";
+  writeTextFile(dir + "/claims_ascii.ply", ascii);
+  for (const char* name : {"overflow.pcd", "claims.pcd", "claims.ply", "claims_ascii.ply"}) {
+    const std::string file = dir + "/" + name;
+    const auto result = runCommand("ulimit -v 3000000; timeout 20 " + toolPath("segment_scene") + " '" + file +
+                                   "' --output '" + dir + "/out' --method euclidean");
+    EXPECT_EQ(result.exit_code, 1) << name << ": " << result.output;
+    EXPECT_NE(result.output.find("segment_scene: error: " + file + ": "), std::string::npos) << result.output;
+    EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '\n'), 1) << result.output;
+  }
 }
 
 TEST(SegmentSceneCli, RealScenesWhenSharedDataExists) {

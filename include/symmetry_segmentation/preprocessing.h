@@ -1,7 +1,8 @@
 #pragma once
 // Scene preprocessing shared by every method: supporting plane (from the scene or RANSAC),
 // removal of points on or below it, voxel-grid downsampling with a map back to the input
-// points, and normals (estimated when missing, oriented toward the sensor).
+// points, and normals (a file's own normals are kept as given, averaged per voxel; missing
+// ones are estimated and oriented toward the sensor).
 
 #include <vector>
 

@@ -1,27 +1,32 @@
 // The small side files of a scene: OctoMap, supporting plane, ground-truth labels.
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <boost/filesystem.hpp>
-#include <octomap/AbstractOcTree.h>
 #include <octomap/OcTree.h>
 
+#include "symmetry_segmentation/cloud_header_check.h"
+#include "symmetry_segmentation/point_validity.h"
 #include "symmetry_segmentation/scene_io.h"
 
 namespace symmetry_segmentation {
 namespace {
 
 std::string readWholeFile(const std::string& path) {
-  boost::system::error_code ec;
-  if (!boost::filesystem::exists(path, ec)) throw InputError(path, "no such file");
+  checkReadableFile(path);
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "cannot open file for reading");
   std::stringstream buffer;
   buffer << in.rdbuf();
+  if (in.bad()) throw InputError(path, "cannot read file");
   return buffer.str();
 }
 
@@ -29,43 +34,184 @@ bool startsWith(const std::string& text, const std::string& prefix) {
   return text.compare(0, prefix.size(), prefix) == 0;
 }
 
-// OctoMap's readers trust the stream: a truncated tree parses "successfully" into a partial
-// map, but the reads past the end leave the stream failed.
-void checkStreamComplete(const std::string& path, const std::istream& stream) {
-  if (stream.fail()) throw InputError(path, "truncated OctoMap data");
+// OcTree keys have 16 bits per axis: the root is depth 0, the finest voxels depth 16.
+constexpr int kOcTreeDepth = 16;
+// Resolutions outside this range are not occupancy maps of a tabletop (m).
+constexpr double kMinResolution = 1e-4, kMaxResolution = 10.0;
+
+struct OctomapHeader {
+  std::string id;
+  std::uint64_t size = 0;         ///< Nodes in the tree.
+  double resolution = 0.0;
+  std::size_t data_offset = 0;    ///< First byte after the "data" line.
+};
+
+// Digits only, so "size -1" or "size 1e9" are errors rather than wrapped or truncated numbers.
+bool parseNodeCount(const std::string& text, std::uint64_t& value) {
+  if (text.empty() || text.size() > 18) return false;
+  value = 0;
+  for (char c : text) {
+    if (!std::isdigit(static_cast<unsigned char>(c))) return false;
+    value = value * 10 + static_cast<std::uint64_t>(c - '0');
+  }
+  return true;
 }
 
-// The .bt header ("# Octomap OcTree binary file", "id OcTree", "size N", "res R", "data"),
-// parsed here because OctoMap's own reader chats on stderr and accepts nonsense resolutions.
-std::shared_ptr<octomap::OcTree> readBinaryTree(const std::string& path, std::istream& stream) {
-  std::string line, id;
-  double resolution = 0.0;
-  long long size = -1;
-  bool have_data = false;
-  for (int i = 0; i < 100 && std::getline(stream, line); ++i) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream fields(line);
-    std::string key;
-    fields >> key;
+bool parseResolution(const std::string& text, double& value) {
+  char* end = nullptr;
+  value = std::strtod(text.c_str(), &end);
+  return !text.empty() && *end == '\0' && std::isfinite(value);
+}
+
+// The header both formats share: a magic first line, then "id", "size", "res", "data" lines
+// (comment lines allowed). Parsed here because OctoMap's own reader chats on stderr and
+// accepts nonsense resolutions.
+OctomapHeader parseOctomapHeader(const std::string& path, const std::string& content) {
+  OctomapHeader header;
+  bool have_size = false, have_res = false;
+  std::size_t begin = content.find('\n');  // skip the magic line, checked by the caller
+  for (int lines = 0; begin != std::string::npos && lines < 100; ++lines) {
+    ++begin;
+    std::size_t end = content.find('\n', begin);
+    if (end == std::string::npos) end = content.size();
+    std::istringstream fields(content.substr(begin, end - begin));
+    std::string key, value;
+    fields >> key >> value;
+    if (key == "data") {
+      header.data_offset = std::min(end + 1, content.size());
+      if (header.id.empty()) throw InputError(path, "corrupt OctoMap header (no 'id' line)");
+      if (!have_size) throw InputError(path, "corrupt OctoMap header (no valid 'size' line)");
+      if (!have_res) throw InputError(path, "corrupt OctoMap header (no valid 'res' line)");
+      return header;
+    }
     if (key == "id") {
-      fields >> id;
+      header.id = value;
     } else if (key == "size") {
-      fields >> size;
+      have_size = parseNodeCount(value, header.size);
+      if (!have_size) throw InputError(path, "corrupt OctoMap header (size '" + value + "' is not a node count)");
     } else if (key == "res") {
-      fields >> resolution;
-    } else if (key == "data") {
-      have_data = true;
-      break;
+      have_res = parseResolution(value, header.resolution);
+      if (!have_res || header.resolution < kMinResolution || header.resolution > kMaxResolution) {
+        throw InputError(path, "OctoMap resolution '" + value + "' must be a number in [1e-4, 10] m");
+      }
+    } else if (!key.empty() && key[0] != '#') {
+      throw InputError(path, "corrupt OctoMap header (unexpected line '" + key + "')");
+    }
+    begin = end < content.size() ? end : std::string::npos;
+  }
+  throw InputError(path, "corrupt OctoMap header (no 'data' line)");
+}
+
+[[noreturn]] void throwCorruptTree(const std::string& path, const std::string& why) {
+  throw InputError(path, "truncated or corrupt OctoMap data (" + why + ")");
+}
+
+// Walks the node stream without building anything and returns its node count. OctoMap's
+// recursive readers would instead follow garbage child bits past the tree's 16 levels and past
+// the end of the data (uninitialised bytes, gigabytes of nodes, stack overflow).
+// `node_bytes` is what one node occupies; `children_of` decodes, for the node starting at
+// `bytes`, which children exist and which of those are followed by their own nodes.
+// `inner_nodes_need_children`: in .bt a followed child is an inner node, which OctoMap only
+// writes when it has children.
+template <typename ChildDecoder>
+std::uint64_t countTreeNodes(const std::string& path, const std::string& data, std::size_t node_bytes,
+                             bool inner_nodes_need_children, ChildDecoder children_of) {
+  std::uint64_t nodes = 0;
+  std::size_t cursor = 0;
+  std::vector<int> pending_depths = {0};  // nodes still to read, next one last (pre-order)
+  while (!pending_depths.empty()) {
+    const int depth = pending_depths.back();
+    pending_depths.pop_back();
+    if (data.size() - cursor < node_bytes) throwCorruptTree(path, "data ends inside a node");
+    int existing = 0, followed = 0;
+    children_of(reinterpret_cast<const unsigned char*>(data.data() + cursor), existing, followed);
+    cursor += node_bytes;
+    ++nodes;
+    if (existing != 0 && depth >= kOcTreeDepth) throwCorruptTree(path, "tree deeper than 16 levels");
+    if (existing == 0 && depth > 0 && inner_nodes_need_children) throwCorruptTree(path, "inner node without children");
+    for (int child = 7; child >= 0; --child) {
+      if (followed & (1 << child)) pending_depths.push_back(depth + 1);
+    }
+    for (int child = 0; child < 8; ++child) {
+      if ((existing & (1 << child)) && !(followed & (1 << child))) ++nodes;  // a leaf with no bytes
     }
   }
-  if (!have_data) throw InputError(path, "corrupt OctoMap header (no 'data' line)");
-  if (id != "OcTree") throw InputError(path, "unsupported OctoMap tree type '" + id + "' (expected OcTree)");
-  if (!(resolution > 0.0) || !std::isfinite(resolution)) throw InputError(path, "OctoMap resolution must be positive");
-  if (size < 0) throw InputError(path, "corrupt OctoMap header (no valid 'size' line)");
-  auto tree = std::make_shared<octomap::OcTree>(resolution);
-  if (size > 0) tree->readBinaryData(stream);  // an empty map has no data at all
+  if (cursor != data.size()) throwCorruptTree(path, std::to_string(data.size() - cursor) + " bytes after the tree");
+  return nodes;
+}
+
+// .bt: 2 bytes per inner node, 2 bits per child (10 free leaf, 01 occupied leaf, 11 inner).
+std::uint64_t countBinaryTreeNodes(const std::string& path, const std::string& data) {
+  return countTreeNodes(path, data, 2, true, [](const unsigned char* bytes, int& existing, int& followed) {
+    existing = followed = 0;
+    for (int child = 0; child < 8; ++child) {
+      const int code = (bytes[child / 4] >> (2 * (child % 4))) & 3;
+      if (code != 0) existing |= 1 << child;
+      if (code == 3) followed |= 1 << child;
+    }
+  });
+}
+
+// .ot (OcTree): every node is its float log-odds then one byte of child bits; every child is
+// followed by its own node. Leaves have no children, so their count is already in the walk.
+std::uint64_t countFullTreeNodes(const std::string& path, const std::string& data) {
+  bool finite = true;
+  const std::uint64_t nodes =
+      countTreeNodes(path, data, sizeof(float) + 1, false, [&finite](const unsigned char* bytes, int& existing, int& followed) {
+        float log_odds = 0.0f;
+        std::memcpy(&log_odds, bytes, sizeof(float));
+        finite = finite && std::isfinite(log_odds);
+        existing = followed = bytes[sizeof(float)];
+      });
+  if (!finite) throwCorruptTree(path, "non-finite occupancy value");
+  return nodes;
+}
+
+void requireNodeCount(const std::string& path, std::uint64_t declared, std::uint64_t found) {
+  if (declared != found) {
+    throwCorruptTree(path, "header says " + std::to_string(declared) + " nodes, data holds " + std::to_string(found));
+  }
+}
+
+// Reads the (already validated) data with OctoMap. A failing read throws instead of leaving
+// OctoMap to continue on uninitialised bytes; the result must match the header.
+template <typename ReadNodes>
+std::shared_ptr<octomap::OcTree> readTree(const std::string& path, const OctomapHeader& header,
+                                          const std::string& data, ReadNodes read_nodes) {
+  auto tree = std::make_shared<octomap::OcTree>(header.resolution);
+  if (header.size == 0) return tree;  // an empty map has no data at all
+  std::istringstream stream(data);
+  stream.exceptions(std::ios::failbit | std::ios::badbit);
+  try {
+    read_nodes(*tree, stream);
+  } catch (const std::ios_base::failure&) {
+    throw InputError(path, "truncated or corrupt OctoMap data");
+  }
+  requireNodeCount(path, header.size, tree->size());
+  if (stream.rdbuf()->sgetc() != std::char_traits<char>::eof()) throwCorruptTree(path, "bytes after the tree");
   return tree;
+}
+
+std::shared_ptr<octomap::OcTree> loadTree(const std::string& path, const std::string& content, bool binary) {
+  const OctomapHeader header = parseOctomapHeader(path, content);
+  if (header.id != "OcTree") {
+    throw InputError(path, "unsupported OctoMap tree type '" + header.id + "' (expected OcTree)");
+  }
+  const std::string data = content.substr(header.data_offset);
+  // Cheap bound first: a .bt node costs at least 2 bits of its parent's 2 bytes (4 per byte,
+  // plus the root), an .ot node exactly 5 bytes.
+  const std::uint64_t max_nodes = binary ? 4 * static_cast<std::uint64_t>(data.size()) + 1 : data.size() / 5;
+  if (header.size > max_nodes) {
+    throwCorruptTree(path, "header says " + std::to_string(header.size) + " nodes, " +
+                               std::to_string(data.size()) + " bytes hold at most " + std::to_string(max_nodes));
+  }
+  if (header.size == 0) {
+    if (!data.empty()) throwCorruptTree(path, "an empty tree with data");
+  } else {
+    requireNodeCount(path, header.size, binary ? countBinaryTreeNodes(path, data) : countFullTreeNodes(path, data));
+  }
+  if (binary) return readTree(path, header, data, [](octomap::OcTree& tree, std::istream& s) { tree.readBinaryData(s); });
+  return readTree(path, header, data, [](octomap::OcTree& tree, std::istream& s) { tree.readData(s); });
 }
 
 }  // namespace
@@ -74,36 +220,24 @@ std::shared_ptr<octomap::OcTree> loadOctomapFile(const std::string& path) {
   const std::string content = readWholeFile(path);
   if (content.empty()) throw InputError(path, "file is empty");
   const std::string ext = boost::filesystem::path(path).extension().string();
-  std::istringstream stream(content);
   if (ext == ".bt") {
     if (!startsWith(content, "# Octomap OcTree binary file")) {
       throw InputError(path, "not a binary OctoMap file (bad header)");
     }
-    auto tree = readBinaryTree(path, stream);
-    checkStreamComplete(path, stream);
-    return tree;
+    return loadTree(path, content, true);
   }
   if (ext == ".ot") {
     if (!startsWith(content, "# Octomap OcTree file")) {
       throw InputError(path, "not an OctoMap .ot file (bad header)");
     }
-    std::unique_ptr<octomap::AbstractOcTree> abstract(octomap::AbstractOcTree::read(stream));
-    if (!abstract) throw InputError(path, "corrupt or truncated OctoMap data");
-    checkStreamComplete(path, stream);
-    auto* octree = dynamic_cast<octomap::OcTree*>(abstract.get());
-    if (!octree) {
-      throw InputError(path, "unsupported OctoMap tree type '" + abstract->getTreeType() +
-                                 "' (expected OcTree)");
-    }
-    abstract.release();
-    return std::shared_ptr<octomap::OcTree>(octree);
+    return loadTree(path, content, false);
   }
   throw InputError(path, "unsupported OctoMap extension '" + ext + "' (expected .bt or .ot)");
 }
 
 PlaneCoefficients loadPlaneFile(const std::string& path) {
   std::istringstream in(readWholeFile(path));
-  PlaneCoefficients plane;
+  Eigen::Vector4d plane;
   for (int i = 0; i < 4; ++i) {
     std::string token;
     if (!(in >> token)) throw InputError(path, "expected 4 numbers 'a b c d', found " + std::to_string(i));
@@ -113,13 +247,20 @@ PlaneCoefficients loadPlaneFile(const std::string& path) {
     if (errno != 0 || end == token.c_str() || *end != '\0' || !std::isfinite(value)) {
       throw InputError(path, "'" + token + "' is not a finite number");
     }
-    plane[i] = static_cast<float>(value);
+    plane[i] = value;
   }
   std::string extra;
   if (in >> extra) throw InputError(path, "unexpected text after 'a b c d': '" + extra + "'");
-  const float norm = plane.head<3>().norm();
-  if (!(norm > 1e-6f)) throw InputError(path, "plane normal (a, b, c) is zero");
-  return plane / norm;
+  // Normalised in double: float would turn a tiny normal into zero or a huge one into inf.
+  const double scale = plane.head<3>().cwiseAbs().maxCoeff();
+  if (!(scale > 0.0)) throw InputError(path, "plane normal (a, b, c) is zero");
+  plane /= scale;
+  plane /= plane.head<3>().norm();
+  const PlaneCoefficients result = plane.cast<float>();
+  if (!result.allFinite() || std::fabs(result[3]) > kMaxUsableCoordinate) {
+    throw InputError(path, "plane offset d / |(a, b, c)| is not finite or farther than 100 km");
+  }
+  return result;
 }
 
 std::vector<int> loadLabelsFile(const std::string& path, std::size_t expected_count) {

@@ -21,18 +21,33 @@ std::string firstExisting(const fs::path& dir, std::initializer_list<const char*
   return {};
 }
 
+Eigen::Vector3f sensorOrigin(const std::string& path, const YAML::Node& node) {
+  if (!node.IsSequence() || node.size() != 3) throw InputError(path, "each sensor origin needs 3 numbers");
+  Eigen::Vector3f origin;
+  for (int i = 0; i < 3; ++i) {
+    if (!node[i].IsScalar()) throw InputError(path, "each sensor origin needs 3 numbers");
+    origin[i] = node[i].as<float>();  // throws on text, which the caller reports
+  }
+  if (!origin.allFinite()) throw InputError(path, "sensor origins must be finite");
+  return origin;
+}
+
+// scene_info.yaml is written by make_scene; hand edits must still fail with one line.
 void loadSceneInfo(const std::string& path, Scene& scene) {
-  YAML::Node info;
   try {
-    info = YAML::LoadFile(path);
-    if (info["kind"]) scene.kind = info["kind"].as<std::string>();
+    const YAML::Node info = YAML::LoadFile(path);
+    if (!info.IsMap()) throw InputError(path, "expected a map with 'kind' and 'sensor_origins'");
+    if (info["kind"]) {
+      if (!info["kind"].IsScalar()) throw InputError(path, "'kind' must be a single word");
+      scene.kind = info["kind"].as<std::string>();
+    }
     if (info["sensor_origins"]) {
-      std::vector<Eigen::Vector3f> origins;
-      for (const auto& origin : info["sensor_origins"]) {
-        const auto xyz = origin.as<std::vector<float>>();
-        if (xyz.size() != 3) throw InputError(path, "each sensor origin needs 3 numbers");
-        origins.emplace_back(xyz[0], xyz[1], xyz[2]);
+      const YAML::Node list = info["sensor_origins"];
+      if (!list.IsSequence() || list.size() == 0) {
+        throw InputError(path, "'sensor_origins' must be a non-empty list of [x, y, z]");
       }
+      std::vector<Eigen::Vector3f> origins;
+      for (const auto& origin : list) origins.push_back(sensorOrigin(path, origin));
       scene.sensor_origins = origins;  // the generator's list is more complete than the PLY's one
     }
   } catch (const YAML::Exception& e) {
@@ -114,11 +129,14 @@ void saveScene(const Scene& scene, const std::string& directory) {
   YAML::Emitter info;
   info << YAML::BeginMap;
   if (!scene.kind.empty()) info << YAML::Key << "kind" << YAML::Value << scene.kind;
-  info << YAML::Key << "sensor_origins" << YAML::Value << YAML::BeginSeq;
-  for (const auto& origin : scene.sensor_origins) {
-    info << YAML::Flow << std::vector<float>{origin.x(), origin.y(), origin.z()};
+  if (!scene.sensor_origins.empty()) {  // the loader wants a non-empty list or none at all
+    info << YAML::Key << "sensor_origins" << YAML::Value << YAML::BeginSeq;
+    for (const auto& origin : scene.sensor_origins) {
+      info << YAML::Flow << std::vector<float>{origin.x(), origin.y(), origin.z()};
+    }
+    info << YAML::EndSeq;
   }
-  info << YAML::EndSeq << YAML::EndMap;
+  info << YAML::EndMap;
   std::ofstream info_file((dir / "scene_info.yaml").string());
   info_file << info.c_str() << '\n';
 }

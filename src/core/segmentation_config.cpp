@@ -1,8 +1,10 @@
 // YAML <-> parameter structs. Unknown keys are errors: a typo must not silently use a default.
 #include "symmetry_segmentation/segmentation_config.h"
 
+#include <cmath>
 #include <functional>
 #include <map>
+#include <sstream>
 
 #include <yaml-cpp/yaml.h>
 
@@ -77,49 +79,162 @@ const std::map<std::string, Setter>& setters() {
   return table;
 }
 
+// Scalars are quoted; lists and maps are only named, since YAML::Dump of a cyclic alias
+// (a: &x [*x]) would recurse forever.
+std::string describeValue(const YAML::Node& value) {
+  if (value.IsScalar()) return "'" + value.Scalar() + "'";
+  if (value.IsSequence()) return "(a list)";
+  if (value.IsMap()) return "(a map)";
+  return "(empty)";
+}
+
 void applyValue(SegmentationConfig& config, const std::string& key, const YAML::Node& value) {
   const auto it = setters().find(key);
   if (it == setters().end()) throw InputError("unknown parameter '" + key + "'");
   try {
     it->second(config, value);
   } catch (const YAML::Exception&) {
-    throw InputError("parameter '" + key + "' has an invalid value '" + YAML::Dump(value) + "'");
+    throw InputError("parameter '" + key + "' has an invalid value " + describeValue(value));
   }
 }
 
+// Keys must be plain names: yaml-cpp would throw a bare conversion error for `? [a] : 1`.
+std::string keyName(const YAML::Node& key, const std::string& prefix) {
+  if (!key.IsScalar()) {
+    throw InputError("configuration keys must be plain names" + (prefix.empty() ? "" : " (in '" + prefix + "')"));
+  }
+  return key.Scalar();
+}
+
+// Deepest dotted key is "symmetry.filter.s_occl"; anything deeper is a typo or a cyclic alias
+// (symmetry: &a {filter: *a}), which would otherwise recurse until the stack overflows.
+constexpr int kMaxKeyDepth = 4;
+
 // Nested maps become dotted keys: symmetry: {filter: {s_occl: x}} sets "symmetry.filter.s_occl".
-void applyMap(SegmentationConfig& config, const std::string& prefix, const YAML::Node& map) {
+void applyMap(SegmentationConfig& config, const std::string& prefix, const YAML::Node& map, int depth) {
+  if (depth > kMaxKeyDepth) throw InputError("configuration nested deeper than " + std::to_string(kMaxKeyDepth) + " levels at '" + prefix + "'");
   for (const auto& entry : map) {
-    const std::string key = prefix + "." + entry.first.as<std::string>();
+    const std::string key = prefix + "." + keyName(entry.first, prefix);
     if (entry.second.IsMap()) {
-      applyMap(config, key, entry.second);
+      applyMap(config, key, entry.second, depth + 1);
     } else {
       applyValue(config, key, entry.second);
     }
   }
 }
 
-void validate(const SegmentationConfig& config) {
-  if (!(config.preprocessing.voxel_size > 0.0f)) throw InputError("preprocessing.voxel_size must be > 0");
-  if (!(config.preprocessing.normal_radius > 0.0f)) throw InputError("preprocessing.normal_radius must be > 0");
-  if (!(config.euclidean.cluster_tolerance > 0.0f)) throw InputError("euclidean.cluster_tolerance must be > 0");
-  if (!(config.lccp.voxel_resolution > 0.0f) || !(config.lccp.seed_resolution > config.lccp.voxel_resolution)) {
-    throw InputError("lccp needs 0 < voxel_resolution < seed_resolution");
+// ---- Validation: every parameter in a range the methods can run with --------------------------
+
+void requireRange(const std::string& key, double value, double low, double high) {
+  if (!(value >= low && value <= high)) {  // also rejects NaN
+    std::ostringstream message;
+    message << key << " must be in [" << low << ", " << high << "], got " << value;
+    throw InputError(message.str());
   }
-  const auto& sym = config.symmetry;
-  if (!(sym.detection.supervoxel_voxel > 0.0f) || !(sym.detection.supervoxel_seed > sym.detection.supervoxel_voxel)) {
+}
+
+void requirePositive(const std::string& key, double value) {
+  if (!(value > 0.0) || !std::isfinite(value)) throw InputError(key + " must be a finite number > 0");
+}
+
+void requireNonNegative(const std::string& key, double value) {
+  if (!(value >= 0.0) || !std::isfinite(value)) throw InputError(key + " must be a finite number >= 0");
+}
+
+void requireAngle(const std::string& key, double degrees) {
+  if (!(degrees > 0.0 && degrees <= 180.0)) throw InputError(key + " must be an angle in (0, 180] degrees");
+}
+
+void requireAtLeast(const std::string& key, long long value, long long minimum) {
+  if (value < minimum) throw InputError(key + " must be >= " + std::to_string(minimum));
+}
+
+void validatePreprocessing(const PreprocessParams& p) {
+  requireRange("preprocessing.voxel_size", p.voxel_size, 1e-3, 1.0);
+  requireNonNegative("preprocessing.table_margin", p.table_margin);
+  requirePositive("preprocessing.ransac_distance", p.ransac_distance);
+  requireRange("preprocessing.ransac_iterations", p.ransac_iterations, 1, 1000000);
+  requirePositive("preprocessing.normal_radius", p.normal_radius);
+  requireNonNegative("preprocessing.max_range", p.max_range);
+}
+
+void validateEuclidean(const EuclideanParams& e) {
+  requirePositive("euclidean.cluster_tolerance", e.cluster_tolerance);
+  requireAtLeast("euclidean.min_cluster_size", e.min_cluster_size, 1);
+  requireAtLeast("euclidean.max_cluster_size", e.max_cluster_size, e.min_cluster_size);
+}
+
+void validateLccp(const LccpParams& l) {
+  requireRange("lccp.voxel_resolution", l.voxel_resolution, 1e-3, 1.0);
+  requirePositive("lccp.seed_resolution", l.seed_resolution);
+  if (!(l.seed_resolution > l.voxel_resolution)) throw InputError("lccp needs 0 < voxel_resolution < seed_resolution");
+  requireNonNegative("lccp.color_importance", l.color_importance);
+  requireNonNegative("lccp.spatial_importance", l.spatial_importance);
+  requireNonNegative("lccp.normal_importance", l.normal_importance);
+  requireRange("lccp.concavity_tolerance", l.concavity_tolerance, 0.0, 180.0);
+  requireNonNegative("lccp.smoothness_threshold", l.smoothness_threshold);
+  requireAtLeast("lccp.min_segment_size", l.min_segment_size, 0);
+  requireAtLeast("lccp.min_points", l.min_points, 0);
+}
+
+void validateSymmetryDetection(const SymmetryDetectionParams& d) {
+  requireRange("symmetry.detection.supervoxel_voxel", d.supervoxel_voxel, 1e-3, 1.0);
+  requirePositive("symmetry.detection.supervoxel_seed", d.supervoxel_seed);
+  if (!(d.supervoxel_seed > d.supervoxel_voxel)) {
     throw InputError("symmetry.detection needs 0 < supervoxel_voxel < supervoxel_seed");
   }
-  if (!(sym.detection.mean_shift_angle_deg > 0.0f) || !(sym.detection.mean_shift_distance > 0.0f)) {
-    throw InputError("symmetry.detection mean-shift bandwidths must be > 0");
+  requireAngle("symmetry.detection.merge_normal_angle_deg", d.merge_normal_angle_deg);
+  requirePositive("symmetry.detection.boundary_radius", d.boundary_radius);
+  requirePositive("symmetry.detection.curve_link_radius", d.curve_link_radius);
+  requireAtLeast("symmetry.detection.min_curve_points", d.min_curve_points, 1);
+  requireAtLeast("symmetry.detection.tangent_half_window", d.tangent_half_window, 1);
+  requireAngle("symmetry.detection.max_tangent_angle_deg", d.max_tangent_angle_deg);
+  requireNonNegative("symmetry.detection.min_match_distance", d.min_match_distance);
+  requirePositive("symmetry.detection.max_match_distance", d.max_match_distance);
+  if (!(d.max_match_distance > d.min_match_distance)) {
+    throw InputError("symmetry.detection needs min_match_distance < max_match_distance");
   }
-  if (!(sym.cut.dmax > 0.0f) || !(sym.cut.dbuf > sym.cut.dmax)) throw InputError("symmetry.cut needs 0 < dmax < dbuf");
-  if (!(sym.cut.alpha_min_deg < sym.cut.alpha_max_deg)) throw InputError("symmetry.cut needs alpha_min_deg < alpha_max_deg");
-  if (!(sym.cut.sigma_convex_deg > 0.0f) || !(sym.cut.sigma_concave_deg > 0.0f)) {
-    throw InputError("symmetry.cut sigmas must be > 0");
-  }
-  if (sym.cut.neighbours < 1 || sym.cut.neighbours > 50) throw InputError("symmetry.cut.neighbours must be in [1, 50]");
-  if (sym.threads < 0) throw InputError("symmetry.threads must be >= 0");
+  requireAngle("symmetry.detection.mean_shift_angle_deg", d.mean_shift_angle_deg);
+  requirePositive("symmetry.detection.mean_shift_distance", d.mean_shift_distance);
+  requireAtLeast("symmetry.detection.min_plane_support", d.min_plane_support, 1);
+  requireAngle("symmetry.detection.merge_plane_angle_deg", d.merge_plane_angle_deg);
+  requirePositive("symmetry.detection.merge_plane_distance", d.merge_plane_distance);
+  requireAtLeast("symmetry.detection.max_hypotheses", d.max_hypotheses, 1);
+}
+
+void validateSymmetryCut(const SymmetryCutParams& c) {
+  requirePositive("symmetry.cut.dmax", c.dmax);
+  requirePositive("symmetry.cut.dbuf", c.dbuf);
+  if (!(c.dbuf > c.dmax)) throw InputError("symmetry.cut needs 0 < dmax < dbuf");
+  requireAngle("symmetry.cut.alpha_min_deg", c.alpha_min_deg);
+  requireAngle("symmetry.cut.alpha_max_deg", c.alpha_max_deg);
+  if (!(c.alpha_min_deg < c.alpha_max_deg)) throw InputError("symmetry.cut needs alpha_min_deg < alpha_max_deg");
+  // Decay scales, not angles between directions: the paper's convex one is 360 degrees.
+  requirePositive("symmetry.cut.sigma_convex_deg", c.sigma_convex_deg);
+  requirePositive("symmetry.cut.sigma_concave_deg", c.sigma_concave_deg);
+  requireNonNegative("symmetry.cut.lambda_smooth", c.lambda_smooth);
+  requireNonNegative("symmetry.cut.lambda_sym", c.lambda_sym);
+  requireRange("symmetry.cut.neighbours", c.neighbours, 1, 50);
+}
+
+void validateSymmetryRest(const SymmetryParams& sym) {
+  requireRange("symmetry.refinement.icp_iterations", sym.refinement.icp_iterations, 0, 10000);
+  requirePositive("symmetry.refinement.icp_max_correspondence", sym.refinement.icp_max_correspondence);
+  requireRange("symmetry.filter.s_occl", sym.filter.s_occl, 0.0, 1.0);
+  requireRange("symmetry.filter.s_smooth", sym.filter.s_smooth, 0.0, 1.0);
+  requireAngle("symmetry.filter.smooth_normal_angle_deg", sym.filter.smooth_normal_angle_deg);
+  requireAtLeast("symmetry.filter.min_segment_points", sym.filter.min_segment_points, 1);
+  requireRange("symmetry.filter.duplicate_overlap", sym.filter.duplicate_overlap, 0.0, 1.0);
+  requireRange("symmetry.threads", sym.threads, 0, 1024);
+}
+
+void validate(const SegmentationConfig& config) {
+  validatePreprocessing(config.preprocessing);
+  validateEuclidean(config.euclidean);
+  validateLccp(config.lccp);
+  validateSymmetryDetection(config.symmetry.detection);
+  validateSymmetryCut(config.symmetry.cut);
+  validateSymmetryRest(config.symmetry);
 }
 
 }  // namespace
@@ -129,9 +244,9 @@ SegmentationConfig configFromYaml(const YAML::Node& node) {
   if (!node || node.IsNull()) return config;
   if (!node.IsMap()) throw InputError("configuration must be a map of sections");
   for (const auto& section : node) {
-    const std::string section_name = section.first.as<std::string>();
+    const std::string section_name = keyName(section.first, "");
     if (!section.second.IsMap()) throw InputError("configuration section '" + section_name + "' must be a map");
-    applyMap(config, section_name, section.second);
+    applyMap(config, section_name, section.second, 2);
   }
   validate(config);
   return config;
@@ -150,6 +265,8 @@ SegmentationConfig loadConfigFile(const std::string& path) {
     return configFromYaml(node);
   } catch (const InputError& e) {
     throw InputError(path, e.what());
+  } catch (const YAML::Exception& e) {  // whatever yaml-cpp still throws while walking the tree
+    throw InputError(path, std::string("invalid configuration: ") + e.what());
   }
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include <boost/filesystem.hpp>
 #include <pcl/io/ply_io.h>
 #include <pcl/io/png_io.h>
 
@@ -149,7 +150,13 @@ void renderPng(const pcl::PointCloud<pcl::PointXYZRGB>& cloud, const View& view,
       }
     }
   }
+  // saveRgbPNGFile reports nothing: a missing or empty file is the only sign it failed, so a
+  // stale picture from an earlier run must not be there to pass for a new one.
+  boost::system::error_code ec;
+  if (boost::filesystem::is_regular_file(path, ec)) boost::filesystem::remove(path, ec);
   pcl::io::saveRgbPNGFile(path, image.data(), width, height);
+  const auto written = boost::filesystem::file_size(path, ec);
+  if (ec || written == 0) throw InputError(path, "cannot write PNG");
 }
 
 }  // namespace symmetry_segmentation

@@ -1,6 +1,9 @@
 #include "symmetry_segmentation/segments_json.h"
 
+#include <cmath>
+#include <cstdint>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -45,41 +48,105 @@ void writeSegmentsJson(const SegmentationResult& result, const std::string& path
   if (!out) throw InputError(path, "cannot write file");
 }
 
+namespace {
+
+// nlohmann's get<>() converts silently (3.5 -> 3, -1 -> 2^64-1, 1e300 -> inf as float): every
+// value is checked for the exact JSON type instead, and failures name the offending field.
+[[noreturn]] void malformed(const std::string& path, const std::string& problem) {
+  throw InputError(path, "malformed segments JSON: " + problem);
+}
+
+std::uint64_t unsignedInteger(const std::string& path, const Json& value, const std::string& what) {
+  if (!value.is_number_unsigned()) malformed(path, what + " must be a non-negative integer");
+  return value.get<std::uint64_t>();
+}
+
+float finiteFloat(const std::string& path, const Json& value, const std::string& what) {
+  if (!value.is_number()) malformed(path, what + " must be a number");
+  const float number = value.get<float>();
+  if (!std::isfinite(number)) malformed(path, what + " must be finite");
+  return number;
+}
+
+const Json& member(const std::string& path, const Json& object, const std::string& key, const std::string& what) {
+  if (!object.is_object()) malformed(path, what + " must be an object");
+  if (!object.contains(key)) malformed(path, what + " lacks '" + key + "'");
+  return object.at(key);
+}
+
+std::vector<int> segmentIndices(const std::string& path, const Json& indices, std::size_t input_points) {
+  if (!indices.is_array()) malformed(path, "'indices' must be an array");
+  std::vector<int> result;
+  result.reserve(indices.size());
+  for (const Json& index : indices) {
+    const std::uint64_t value = unsignedInteger(path, index, "segment index");
+    if (value >= input_points) {
+      throw InputError(path, "segment index " + std::to_string(value) + " outside [0, input_points)");
+    }
+    result.push_back(static_cast<int>(value));  // < input_points <= INT_MAX
+  }
+  return result;
+}
+
+SymmetryPlane symmetryPlane(const std::string& path, const Json& symmetry) {
+  const Json& normal = member(path, symmetry, "normal", "'symmetry'");
+  if (!normal.is_array() || normal.size() != 3) malformed(path, "symmetry normal needs 3 numbers");
+  SymmetryPlane plane;
+  for (int i = 0; i < 3; ++i) plane.normal[i] = finiteFloat(path, normal[i], "symmetry normal");
+  plane.distance = finiteFloat(path, member(path, symmetry, "distance", "'symmetry'"), "symmetry distance");
+  return plane;
+}
+
+SegmentScores segmentScores(const std::string& path, const Json& scores) {
+  return SegmentScores{finiteFloat(path, member(path, scores, "occlusion", "'scores'"), "occlusion score"),
+                       finiteFloat(path, member(path, scores, "smoothness", "'scores'"), "smoothness score")};
+}
+
+Segment readSegment(const std::string& path, const Json& entry, std::size_t input_points) {
+  Segment segment;
+  segment.indices = segmentIndices(path, member(path, entry, "indices", "each segment"), input_points);
+  if (entry.contains("symmetry")) segment.symmetry = symmetryPlane(path, entry["symmetry"]);
+  if (entry.contains("scores")) segment.scores = segmentScores(path, entry["scores"]);
+  return segment;
+}
+
+Timings readTimings(const std::string& path, const Json& timing) {
+  if (!timing.is_object()) malformed(path, "'timing_ms' must be an object");
+  Timings result;
+  for (const auto& [stage, ms] : timing.items()) {
+    if (!ms.is_number() || !std::isfinite(ms.get<double>())) malformed(path, "timing '" + stage + "' must be a finite number");
+    result.emplace_back(stage, ms.get<double>());
+  }
+  return result;
+}
+
+Counts readCounts(const std::string& path, const Json& counts) {
+  if (!counts.is_object()) malformed(path, "'counts' must be an object");
+  Counts result;
+  for (const auto& [name, count] : counts.items()) {
+    result.emplace_back(name, static_cast<std::size_t>(unsignedInteger(path, count, "count '" + name + "'")));
+  }
+  return result;
+}
+
+}  // namespace
+
 SegmentationResult readSegmentsJson(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "cannot open file for reading");
   SegmentationResult result;
   try {
     const Json json = Json::parse(in);
-    result.input_points = json.at("input_points").get<std::size_t>();
-    for (const auto& entry : json.at("segments")) {
-      Segment segment;
-      segment.indices = entry.at("indices").get<std::vector<int>>();
-      for (int index : segment.indices) {
-        if (index < 0 || static_cast<std::size_t>(index) >= result.input_points) {
-          throw InputError(path, "segment index " + std::to_string(index) + " outside [0, input_points)");
-        }
-      }
-      if (entry.contains("symmetry")) {
-        SymmetryPlane plane;
-        const auto normal = entry["symmetry"].at("normal").get<std::vector<float>>();
-        if (normal.size() != 3) throw InputError(path, "symmetry normal needs 3 numbers");
-        plane.normal = Eigen::Vector3f(normal[0], normal[1], normal[2]);
-        plane.distance = entry["symmetry"].at("distance").get<float>();
-        segment.symmetry = plane;
-      }
-      if (entry.contains("scores")) {
-        segment.scores = SegmentScores{entry["scores"].at("occlusion").get<float>(),
-                                       entry["scores"].at("smoothness").get<float>()};
-      }
-      result.segments.push_back(std::move(segment));
+    const std::uint64_t input_points = unsignedInteger(path, member(path, json, "input_points", "the top level"), "'input_points'");
+    if (input_points > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) {
+      malformed(path, "'input_points' is larger than an index can be");
     }
-    if (json.contains("counts")) {
-      for (const auto& [name, count] : json["counts"].items()) result.counts.emplace_back(name, count.get<std::size_t>());
-    }
-    if (json.contains("timing_ms")) {
-      for (const auto& [stage, ms] : json["timing_ms"].items()) result.timing_ms.emplace_back(stage, ms.get<double>());
-    }
+    result.input_points = static_cast<std::size_t>(input_points);
+    const Json& segments = member(path, json, "segments", "the top level");
+    if (!segments.is_array()) malformed(path, "'segments' must be an array");
+    for (const Json& entry : segments) result.segments.push_back(readSegment(path, entry, result.input_points));
+    if (json.contains("counts")) result.counts = readCounts(path, json["counts"]);
+    if (json.contains("timing_ms")) result.timing_ms = readTimings(path, json["timing_ms"]);
   } catch (const InputError&) {
     throw;
   } catch (const std::exception& e) {

@@ -4,8 +4,10 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "symmetry_segmentation/errors.h"
+#include "symmetry_segmentation/point_validity.h"
 
 namespace symmetry_segmentation {
 
@@ -18,6 +20,8 @@ VoxelGridResult voxelDownsample(const Cloud& cloud, const std::vector<int>& indi
   const double inverse = 1.0 / leaf_size;
   for (int index : indices) {
     const auto& p = cloud.points[index];
+    // A coordinate beyond ~9e18 leaves would make the int64 key conversion undefined.
+    if (!isUsablePoint(p)) continue;
     keyed.push_back({Key{static_cast<std::int64_t>(std::floor(p.x * inverse)),
                          static_cast<std::int64_t>(std::floor(p.y * inverse)),
                          static_cast<std::int64_t>(std::floor(p.z * inverse))},
