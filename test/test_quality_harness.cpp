@@ -49,12 +49,13 @@ TEST(QualityHarness, BaselinesOnTheGeneratedSet) {
                                                   "/scenes " + test_support::toolPath("make_scene"));
   ASSERT_EQ(generated.exit_code, 0) << generated.output;
   const auto evaluated = test_support::runCommand(test_support::toolPath("evaluate_segmentation") + " " + dir +
-                                                  "/scenes --method euclidean --method lccp --csv " + dir + "/eval.csv");
+                                                  "/scenes --method symmetry --method euclidean --method lccp --csv " + dir +
+                                                  "/eval.csv");
   std::cout << evaluated.output << std::endl;  // the table, for the log
   ASSERT_EQ(evaluated.exit_code, 0) << evaluated.output;
 
   const auto rows = readCsv(dir + "/eval.csv");
-  for (const char* method : {"euclidean", "lccp"}) {
+  for (const char* method : {"symmetry", "euclidean", "lccp"}) {
     for (const char* kind : {"isolated", "touching", "stacked", "occluded", "nonconvex", "clutter", "overall"}) {
       for (const char* sigma : {"0.5", "0.75", "0.9"}) {
         const std::string key = std::string(method) + "/" + kind + "/" + sigma;
@@ -69,8 +70,11 @@ TEST(QualityHarness, BaselinesOnTheGeneratedSet) {
   // Objects pushed together defeat it: that is why the other kinds exist.
   EXPECT_LT(rows.at("euclidean/touching/0.5").recall, rows.at("euclidean/isolated/0.5").recall);
   EXPECT_LT(rows.at("euclidean/stacked/0.5").recall, rows.at("euclidean/isolated/0.5").recall);
+  // The symmetry method must at least find most well-separated objects roughly.
+  EXPECT_GE(rows.at("symmetry/isolated/0.5").recall, 0.75);
+  EXPECT_GE(rows.at("symmetry/overall/0.5").precision, 0.7);
   // Stricter thresholds can only lose matches.
-  for (const char* method : {"euclidean", "lccp"}) {
+  for (const char* method : {"symmetry", "euclidean", "lccp"}) {
     const std::string prefix = std::string(method) + "/overall/";
     EXPECT_LE(rows.at(prefix + "0.9").recall, rows.at(prefix + "0.75").recall);
     EXPECT_LE(rows.at(prefix + "0.75").recall, rows.at(prefix + "0.5").recall);

@@ -1,6 +1,10 @@
 // Stage-5 scores of a segment (paper eq. 13-14, as we read them):
-//   occlusion  = |{p in S : reflection of p does not land in observed free space}| / |S|
-//                (it lands on a scene point within dmax, in unknown/occupied space or below the table)
+//   occlusion  = 1 - sum_{p in S} freeCost(p) / |S|, where freeCost is the data term's cost of
+//                foreground for a reflection into observed free space (0 within dmax of a surface,
+//                rising to 1 at dbuf; 1 deep below the table) and 0 for any other landing. The
+//                paper counts free-space landings outright; grading them the way the data term
+//                does keeps a true object's score near 1 when fused-cloud noise and 1 cm voxels
+//                put a few reflections just in front of the mirrored surface.
 //   smoothness = |{k-NN links (p, q) : p in S, q not in S, angle(n_p, n_q) < smooth_normal_angle}| / |S|
 // A true object explains its reflections (occlusion near 1) and ends at creases (smoothness near 0).
 #include <algorithm>
@@ -19,10 +23,11 @@ SegmentScores SymmetricGraphCut::scores(const std::vector<int>& segment, const S
   for (int i : segment) inside[i] = 1;
 
   const ReflectionDataTerm data_term = dataTermView();
-  int explained = 0;
+  double unexplained = 0.0;
   int broken_links = 0;
   for (int i : segment) {
-    if (data_term.evaluate(i, plane).landing != ReflectionLanding::Free) ++explained;
+    const ReflectionEvidence evidence = data_term.evaluate(i, plane);
+    if (evidence.landing == ReflectionLanding::Free) unexplained += evidence.cost_foreground;
     const auto& point = cloud_->points[i];
     for (int j : neighbours_[i]) {
       if (inside[j]) continue;  // each boundary link is seen once, from its inside end
@@ -33,7 +38,7 @@ SegmentScores SymmetricGraphCut::scores(const std::vector<int>& segment, const S
     }
   }
   const float size = static_cast<float>(segment.size());
-  result.occlusion = static_cast<float>(explained) / size;
+  result.occlusion = static_cast<float>(1.0 - unexplained / size);
   result.smoothness = static_cast<float>(broken_links) / size;
   return result;
 }

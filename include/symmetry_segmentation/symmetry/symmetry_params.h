@@ -20,7 +20,7 @@ struct SymmetryDetectionParams {
   float max_match_distance = 0.40f;       ///< ...nor pairs farther apart (larger than any object) (m).
   float mean_shift_angle_deg = 5.0f;      ///< Mean-shift bandwidth on the plane normal.
   float mean_shift_distance = 0.01f;      ///< Mean-shift bandwidth on the plane offset (m).
-  int min_plane_support = 8;              ///< Matched point pairs a plane needs.
+  int min_plane_support = 4;              ///< Matched point pairs a plane needs.
   float merge_plane_angle_deg = 6.0f;     ///< Near-equal planes from different curve pairs are merged.
   float merge_plane_distance = 0.015f;    ///< (m)
   int max_hypotheses = 80;                ///< Strongest hypotheses kept.
