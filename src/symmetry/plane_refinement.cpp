@@ -1,5 +1,6 @@
 #include "symmetry_segmentation/symmetry/plane_refinement.h"
 
+#include <pcl/search/kdtree.h>
 #include <pcl/registration/correspondence_rejection_one_to_one.h>
 #include <pcl/registration/icp.h>
 #include <pcl/registration/transformation_estimation_point_to_plane_lls.h>
@@ -14,6 +15,19 @@ namespace {
 // estimate of this one.
 constexpr float kMaxRefinementAngleDeg = 15.0f;
 constexpr std::size_t kMinSegmentPoints = 10;
+// ICP needs most of the mirrored segment to find counterparts to be meaningful; below this the
+// plane is not a symmetry of the segment and there is nothing to refine.
+constexpr float kMinMatchedFraction = 0.5f;
+
+std::size_t countWithNeighbour(const pcl::search::KdTree<PointT>& tree, const Cloud& queries, float radius) {
+  std::vector<int> index(1);
+  std::vector<float> squared(1);
+  std::size_t matched = 0;
+  for (const auto& q : queries.points) {
+    if (tree.nearestKSearch(q, 1, index, squared) == 1 && squared[0] <= radius * radius) ++matched;
+  }
+  return matched;
+}
 
 }  // namespace
 
@@ -33,7 +47,15 @@ SymmetryPlane refinePlane(const Cloud& cloud, const std::vector<int>& segment, c
     mirrored->push_back(q);
   }
 
+  auto target_tree = std::make_shared<pcl::search::KdTree<PointT>>();
+  target_tree->setInputCloud(target);
+  if (countWithNeighbour(*target_tree, *mirrored, refinement.icp_max_correspondence) <
+      kMinMatchedFraction * static_cast<float>(mirrored->size())) {
+    return plane;
+  }
+
   pcl::IterativeClosestPoint<PointT, PointT> icp;
+  icp.setSearchMethodTarget(target_tree, true);  // built above: do not build it again
   icp.setTransformationEstimation(
       std::make_shared<pcl::registration::TransformationEstimationPointToPlaneLLS<PointT, PointT>>());
   icp.addCorrespondenceRejector(std::make_shared<pcl::registration::CorrespondenceRejectorOneToOne>());
