@@ -54,15 +54,16 @@ TEST(Preprocessing, RemovesGivenTableAndMapsBackToInput) {
   for (std::size_t i = 0; i < scene.cloud->size(); ++i) {
     const int voxel = prepared.input_to_voxel[i];
     if (voxel < 0) {
-      EXPECT_LE(scene.cloud->points[i].z, 0.0101f);
+      EXPECT_LE(scene.cloud->points[i].z, prepared.table_margin + 1e-4f);
       continue;
     }
     ++kept;
-    EXPECT_GT(scene.cloud->points[i].z, 0.01f);
+    EXPECT_GT(scene.cloud->points[i].z, prepared.table_margin);
     const auto& centroid = prepared.cloud->points[voxel];
     EXPECT_LT((centroid.getVector3fMap() - scene.cloud->points[i].getVector3fMap()).norm(), 0.0175f);
   }
   EXPECT_EQ(kept, prepared.kept_input_indices.size());
+  EXPECT_FLOAT_EQ(prepared.table_margin, 0.003f);  // a noiseless table: the smallest margin
   EXPECT_GT(kept, 1000u);
   // The working cloud is the box only: ~1 cm voxels over its visible surface.
   EXPECT_GT(prepared.cloud->size(), 100u);
@@ -108,4 +109,25 @@ TEST(Preprocessing, NothingAboveTheTableIsAnError) {
   ss::PreprocessParams keep_table;
   keep_table.remove_table = false;
   EXPECT_GT(ss::preprocess(scene, keep_table).cloud->size(), 100u);
+}
+
+TEST(Preprocessing, AdaptiveTableMarginFollowsTheTableNoise) {
+  ss::PreprocessParams params;  // ransac_distance 1 cm, table_margin 1 cm
+  std::vector<float> noisy;
+  std::uint32_t state = 12345;
+  for (int i = 0; i < 4000; ++i) {
+    // Sum of uniforms: roughly Gaussian with sigma 2 mm, reproducible everywhere.
+    float sum = 0.0f;
+    for (int k = 0; k < 12; ++k) {
+      state = state * 1664525u + 1013904223u;
+      sum += static_cast<float>(state >> 8) / 16777216.0f;
+    }
+    noisy.push_back(0.002f * (sum - 6.0f));
+  }
+  for (int i = 0; i < 500; ++i) noisy.push_back(0.05f + 0.001f * i);  // object points well above
+  EXPECT_NEAR(ss::adaptiveTableMargin(noisy, params), 0.006f, 0.0012f);
+  EXPECT_FLOAT_EQ(ss::adaptiveTableMargin(std::vector<float>(4000, 0.0f), params), 0.003f);
+  EXPECT_FLOAT_EQ(ss::adaptiveTableMargin(std::vector<float>(50, 0.0f), params), params.table_margin);
+  params.table_margin = 0.004f;  // the configured margin caps it
+  EXPECT_FLOAT_EQ(ss::adaptiveTableMargin(noisy, params), 0.004f);
 }

@@ -13,7 +13,10 @@ namespace symmetry_segmentation {
 struct PreprocessParams {
   float voxel_size = 0.01f;              ///< Voxel-grid leaf size (m).
   bool remove_table = true;              ///< Find the supporting plane and drop points on/below it.
-  float table_margin = 0.01f;            ///< Points closer than this above the plane are dropped (m).
+  float table_margin = 0.01f;            ///< Points closer than this above the plane are dropped (m);
+                                         ///< with adaptive_table_margin, the largest margin used.
+  bool adaptive_table_margin = true;     ///< Margin = 3 sigma of the table points' noise (>= 3 mm),
+                                         ///< so low-noise fused clouds keep the objects' bottoms.
   float ransac_distance = 0.01f;         ///< RANSAC inlier distance when the plane is estimated (m).
   int ransac_iterations = 500;
   float normal_radius = 0.03f;           ///< Neighbourhood radius for normal estimation (m).
@@ -26,12 +29,17 @@ struct PreprocessedScene {
   std::vector<std::vector<int>> voxel_to_input;  ///< Per downsampled point: its input points.
   std::vector<int> kept_input_indices;     ///< Input points that survived (finite, above the table).
   bool has_table = false;
+  float table_margin = 0.0f;               ///< The margin actually used (m).
   PlaneCoefficients table_plane = PlaneCoefficients::Zero();  ///< Normal points away from the table top.
   Eigen::Vector3f viewpoint = Eigen::Vector3f::Zero();         ///< Used to orient normals.
 };
 
 /// Throws InputError when nothing is left to segment (no finite point, all on the table).
 PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params);
+
+/// The margin above the table for these signed point-to-plane distances: median + 3 sigma of
+/// the points within ransac_distance (robust sigma), clamped to [3 mm, params.table_margin].
+float adaptiveTableMargin(const std::vector<float>& distances, const PreprocessParams& params);
 
 /// Estimates the dominant plane of `cloud` with RANSAC; returns false if none is found.
 bool estimateSupportingPlane(const Cloud& cloud, const PreprocessParams& params,

@@ -2,6 +2,7 @@
 // -> normals. Keeps the input<->voxel maps so every method reports on the input cloud.
 #include "symmetry_segmentation/preprocessing.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <pcl/features/normal_3d.h>
@@ -13,6 +14,9 @@
 
 namespace symmetry_segmentation {
 namespace {
+
+// Below this even a noiseless table leaves voxel-sized slivers of itself above the cut.
+constexpr float kMinTableMargin = 0.003f;
 
 bool isFinitePoint(const PointT& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
@@ -63,6 +67,23 @@ void estimateMissingNormals(Cloud& cloud, const Eigen::Vector3f& viewpoint, floa
 
 }  // namespace
 
+float adaptiveTableMargin(const std::vector<float>& distances, const PreprocessParams& params) {
+  // The table's own points are the bulk of those within ransac_distance of the plane; their
+  // spread (median absolute deviation, scaled to a Gaussian sigma) is the sensor's noise there.
+  std::vector<float> near;
+  for (float d : distances) {
+    if (std::fabs(d) < params.ransac_distance) near.push_back(d);
+  }
+  if (near.size() < 100) return params.table_margin;  // too few table points to tell
+  const auto middle = near.begin() + static_cast<std::ptrdiff_t>(near.size() / 2);
+  std::nth_element(near.begin(), middle, near.end());
+  const float median = *middle;
+  for (float& d : near) d = std::fabs(d - median);
+  std::nth_element(near.begin(), middle, near.end());
+  const float sigma = 1.4826f * *middle;
+  return std::clamp(median + 3.0f * sigma, kMinTableMargin, params.table_margin);
+}
+
 PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params) {
   if (!scene.cloud || scene.cloud->empty()) throw InputError(scene.cloud_path, "cloud has zero points");
   if (!(params.voxel_size > 0.0f)) throw InputError("preprocessing.voxel_size must be positive");
@@ -97,11 +118,15 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
     if (found) {
       out.has_table = true;
       out.table_plane = orientPlane(plane, scene, out.viewpoint, *coarse, params.ransac_distance);
+      std::vector<float> distances(finite.size());
+      for (std::size_t k = 0; k < finite.size(); ++k) {
+        distances[k] = out.table_plane.head<3>().dot(input.points[finite[k]].getVector3fMap()) + out.table_plane[3];
+      }
+      out.table_margin = params.adaptive_table_margin ? adaptiveTableMargin(distances, params) : params.table_margin;
       std::vector<int> above;
       above.reserve(finite.size());
-      for (int i : finite) {
-        const float distance = out.table_plane.head<3>().dot(input.points[i].getVector3fMap()) + out.table_plane[3];
-        if (distance > params.table_margin) above.push_back(i);
+      for (std::size_t k = 0; k < finite.size(); ++k) {
+        if (distances[k] > out.table_margin) above.push_back(finite[k]);
       }
       finite.swap(above);
     }

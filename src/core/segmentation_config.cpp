@@ -35,6 +35,7 @@ const std::map<std::string, Setter>& setters() {
       {"preprocessing.voxel_size", field(&C::preprocessing, &PreprocessParams::voxel_size)},
       {"preprocessing.remove_table", field(&C::preprocessing, &PreprocessParams::remove_table)},
       {"preprocessing.table_margin", field(&C::preprocessing, &PreprocessParams::table_margin)},
+      {"preprocessing.adaptive_table_margin", field(&C::preprocessing, &PreprocessParams::adaptive_table_margin)},
       {"preprocessing.ransac_distance", field(&C::preprocessing, &PreprocessParams::ransac_distance)},
       {"preprocessing.ransac_iterations", field(&C::preprocessing, &PreprocessParams::ransac_iterations)},
       {"preprocessing.normal_radius", field(&C::preprocessing, &PreprocessParams::normal_radius)},
