@@ -15,7 +15,7 @@ struct PreprocessParams {
   bool remove_table = true;              ///< Find the supporting plane and drop points on/below it.
   float table_margin = 0.01f;            ///< Points closer than this above the plane are dropped (m);
                                          ///< with adaptive_table_margin, the largest margin used.
-  bool adaptive_table_margin = true;     ///< Margin = 3 sigma of the table points' noise (>= 3 mm),
+  bool adaptive_table_margin = true;     ///< Margin = 3 sigma of the table points' noise (>= 5 mm),
                                          ///< so low-noise fused clouds keep the objects' bottoms.
   float ransac_distance = 0.01f;         ///< RANSAC inlier distance when the plane is estimated (m).
   int ransac_iterations = 500;
@@ -38,7 +38,7 @@ struct PreprocessedScene {
 PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params);
 
 /// The margin above the table for these signed point-to-plane distances: median + 3 sigma of
-/// the points within ransac_distance (robust sigma), clamped to [3 mm, params.table_margin].
+/// the points within ransac_distance (robust sigma), clamped to [5 mm, params.table_margin].
 float adaptiveTableMargin(const std::vector<float>& distances, const PreprocessParams& params);
 
 /// Estimates the dominant plane of `cloud` with RANSAC; returns false if none is found.

@@ -15,8 +15,9 @@
 namespace symmetry_segmentation {
 namespace {
 
-// Below this even a noiseless table leaves voxel-sized slivers of itself above the cut.
-constexpr float kMinTableMargin = 0.003f;
+// Below this the table leaves slivers of itself above the cut, and they are mirror images of
+// each other about any vertical plane: a symmetric "object" the cut happily joins to the real one.
+constexpr float kMinTableMargin = 0.005f;
 
 bool isFinitePoint(const PointT& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
