@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <pcl/console/print.h>
 
+#include "symmetry_segmentation/command_line.h"
 #include "symmetry_segmentation/scene_io.h"
 #include "symmetry_segmentation/segmenter.h"
 
@@ -30,19 +31,11 @@ struct Options {
   bool baselines = true;
 };
 
-[[noreturn]] void usageError(const std::string& message) {
-  std::cerr << "benchmark_segmentation: " << message << "\nrun 'benchmark_segmentation --help' for usage\n";
-  std::exit(2);
-}
-
 Options parse(int argc, char** argv) {
   Options options;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) usageError("option " + arg + " needs a value");
-      return argv[++i];
-    };
+  ss::CommandLine arguments("benchmark_segmentation", argc, argv);
+  while (arguments.next()) {
+    const std::string arg = arguments.current();
     if (arg == "-h" || arg == "--help") {
       std::cout << "usage: benchmark_segmentation <scene>... [--runs N] [--method M]... [--config F] [--json out.json]\n"
                    "                              [--no-baselines]\n"
@@ -52,26 +45,26 @@ Options parse(int argc, char** argv) {
       std::exit(0);
     } else if (arg == "--runs") {
       try {
-        options.runs = std::stoi(value());
+        options.runs = std::stoi(arguments.value());
       } catch (...) {
-        usageError("--runs needs a positive integer");
+        arguments.usageError("--runs needs a positive integer");
       }
-      if (options.runs < 1 || options.runs > 1000) usageError("--runs must be in [1, 1000]");
+      if (options.runs < 1 || options.runs > 1000) arguments.usageError("--runs must be in [1, 1000]");
     } else if (arg == "--method") {
-      options.methods.push_back(value());
+      options.methods.push_back(arguments.value());
     } else if (arg == "--config") {
-      options.config = value();
+      options.config = arguments.value();
     } else if (arg == "--json") {
-      options.json = value();
+      options.json = arguments.value();
     } else if (arg == "--no-baselines") {
       options.baselines = false;
     } else if (!arg.empty() && arg[0] == '-') {
-      usageError("unknown option '" + arg + "'");
+      arguments.usageError("unknown option '" + arg + "'");
     } else {
       options.scenes.push_back(arg);
     }
   }
-  if (options.scenes.empty()) usageError("missing <scene>");
+  if (options.scenes.empty()) arguments.usageError("missing <scene>");
   if (options.methods.empty()) options.methods.push_back(ss::defaultMethod());
   if (options.baselines) {
     for (const char* baseline : {"euclidean", "lccp"}) {

@@ -8,6 +8,7 @@
 #include <boost/filesystem.hpp>
 #include <pcl/console/print.h>
 
+#include "symmetry_segmentation/command_line.h"
 #include "symmetry_segmentation/scene_io.h"
 #include "symmetry_segmentation/segmentation_output.h"
 #include "symmetry_segmentation/segmenter.h"
@@ -31,11 +32,6 @@ struct Options {
   bool png = true;
 };
 
-[[noreturn]] void usageError(const std::string& message) {
-  std::cerr << "segment_scene: " << message << "\n" << "run 'segment_scene --help' for usage\n";
-  std::exit(2);
-}
-
 void printUsage() {
   std::cout << kUsage << ss::defaultMethod() << "; available:";
   for (const auto& m : ss::availableMethods()) std::cout << ' ' << m;
@@ -46,38 +42,35 @@ void printUsage() {
 
 Options parse(int argc, char** argv) {
   Options options;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) usageError("option " + arg + " needs a value");
-      return argv[++i];
-    };
+  ss::CommandLine arguments("segment_scene", argc, argv);
+  while (arguments.next()) {
+    const std::string arg = arguments.current();
     if (arg == "-h" || arg == "--help") {
       printUsage();
       std::exit(0);
     } else if (arg == "--output" || arg == "-o") {
-      options.output = value();
+      options.output = arguments.value();
     } else if (arg == "--method") {
-      options.method = value();
+      options.method = arguments.value();
     } else if (arg == "--config") {
-      options.config = value();
+      options.config = arguments.value();
     } else if (arg == "--set") {
-      const std::string assignment = value();
+      const std::string assignment = arguments.value();
       const auto eq = assignment.find('=');
-      if (eq == std::string::npos || eq == 0) usageError("--set expects section.key=value, got '" + assignment + "'");
+      if (eq == std::string::npos || eq == 0) arguments.usageError("--set expects section.key=value, got '" + assignment + "'");
       options.overrides.emplace_back(assignment.substr(0, eq), assignment.substr(eq + 1));
     } else if (arg == "--no-png") {
       options.png = false;
     } else if (!arg.empty() && arg[0] == '-') {
-      usageError("unknown option '" + arg + "'");
+      arguments.usageError("unknown option '" + arg + "'");
     } else if (options.scene.empty()) {
       options.scene = arg;
     } else {
-      usageError("unexpected argument '" + arg + "' (one scene at a time)");
+      arguments.usageError("unexpected argument '" + arg + "' (one scene at a time)");
     }
   }
-  if (options.scene.empty()) usageError("missing <scene>");
-  if (options.output.empty()) usageError("missing --output DIR");
+  if (options.scene.empty()) arguments.usageError("missing <scene>");
+  if (options.output.empty()) arguments.usageError("missing --output DIR");
   return options;
 }
 
