@@ -63,6 +63,7 @@ const std::map<std::string, Setter>& setters() {
       SYMSEG_DETECTION(mean_shift_angle_deg), SYMSEG_DETECTION(mean_shift_distance),
       SYMSEG_DETECTION(min_plane_support), SYMSEG_DETECTION(merge_plane_angle_deg),
       SYMSEG_DETECTION(merge_plane_distance), SYMSEG_DETECTION(max_hypotheses),
+      SYMSEG_DETECTION(upright_hypotheses),
 #undef SYMSEG_DETECTION
 #define SYMSEG_CUT(name) {"symmetry.cut." #name, symmetryField(&SymmetryParams::cut, &SymmetryCutParams::name)}
       SYMSEG_CUT(dmax), SYMSEG_CUT(alpha_min_deg), SYMSEG_CUT(alpha_max_deg), SYMSEG_CUT(dbuf),

@@ -145,7 +145,11 @@ std::vector<int> boundaryPoints(const Cloud& cloud, const std::vector<int>& labe
 }
 
 std::vector<Curve> extractNormalEdgeCurves(const Cloud& cloud, const SymmetryDetectionParams& params) {
-  const std::vector<int> labels = mergedSegmentLabels(cloud, params);
+  return extractNormalEdgeCurves(cloud, mergedSegmentLabels(cloud, params), params);
+}
+
+std::vector<Curve> extractNormalEdgeCurves(const Cloud& cloud, const std::vector<int>& labels,
+                                           const SymmetryDetectionParams& params) {
   const std::vector<int> boundary = boundaryPoints(cloud, labels, params);
   std::vector<Curve> curves = linkCurves(cloud, boundary, labels, params);
   useEdgeTangents(cloud, labels, params, curves);

@@ -1,11 +1,19 @@
+// Stage 4: the plane that best maps a segment onto itself. This is point-to-plane ICP between
+// the segment and its reflection, with the motion constrained to be a reflection: each
+// iteration mirrors the segment about the current plane, pairs every mirrored point one-to-one
+// with its nearest compatible segment point, and solves a Gauss-Newton step for the plane's
+// three degrees of freedom (normal direction and offset) minimising the point-to-plane
+// distances. A free rigid ICP followed by a plane re-fit needs six unknowns, converges more
+// slowly, and the re-fit from noisy point pairs biases the offset by millimetres that then show
+// as reflections into free space.
 #include "symmetry_segmentation/symmetry/plane_refinement.h"
 
-#include <pcl/search/kdtree.h>
-#include <pcl/registration/correspondence_rejection_one_to_one.h>
-#include <pcl/registration/icp.h>
-#include <pcl/registration/transformation_estimation_point_to_plane_lls.h>
+#include <cmath>
+#include <limits>
 
-#include "symmetry_segmentation/symmetry/symmetry_hypotheses.h"
+#include <Eigen/Cholesky>
+#include <pcl/kdtree/kdtree_flann.h>
+
 #include "symmetry_segmentation/symmetry/symmetry_plane.h"
 
 namespace symmetry_segmentation {
@@ -15,74 +23,97 @@ namespace {
 // estimate of this one.
 constexpr float kMaxRefinementAngleDeg = 15.0f;
 constexpr std::size_t kMinSegmentPoints = 10;
-// ICP needs most of the mirrored segment to find counterparts to be meaningful; below this the
-// plane is not a symmetry of the segment and there is nothing to refine.
+// Most of the mirrored segment must find counterparts for the plane to be a symmetry of it.
 constexpr float kMinMatchedFraction = 0.5f;
+// Mirrored and matched normals further apart than this are different surfaces.
+constexpr float kMinNormalCos = 0.7f;  // ~45 degrees
+constexpr float kConvergedStep = 1e-5f;
 
-std::size_t countWithNeighbour(const pcl::search::KdTree<PointT>& tree, const Cloud& queries, float radius) {
-  std::vector<int> index(1);
-  std::vector<float> squared(1);
-  std::size_t matched = 0;
-  for (const auto& q : queries.points) {
-    if (tree.nearestKSearch(q, 1, index, squared) == 1 && squared[0] <= radius * radius) ++matched;
-  }
-  return matched;
+struct Match {
+  int source = -1;
+  float squared_distance = std::numeric_limits<float>::max();
+};
+
+/// Two unit vectors spanning the plane perpendicular to n.
+void tangentBasis(const Eigen::Vector3f& n, Eigen::Vector3f& u, Eigen::Vector3f& v) {
+  const Eigen::Vector3f helper = std::fabs(n.x()) < 0.9f ? Eigen::Vector3f::UnitX() : Eigen::Vector3f::UnitY();
+  u = n.cross(helper).normalized();
+  v = n.cross(u);
 }
 
 }  // namespace
 
 SymmetryPlane refinePlane(const Cloud& cloud, const std::vector<int>& segment, const SymmetryPlane& plane,
-                          const SymmetryRefinementParams& refinement, const SymmetryDetectionParams& detection) {
+                          const SymmetryRefinementParams& refinement, const SymmetryDetectionParams& /*detection*/) {
   if (!refinement.enabled || segment.size() < kMinSegmentPoints) return plane;
-  auto target = std::make_shared<Cloud>();
-  auto mirrored = std::make_shared<Cloud>();
-  target->reserve(segment.size());
-  mirrored->reserve(segment.size());
-  for (int index : segment) {
-    const PointT& p = cloud.points[index];
-    target->push_back(p);
-    PointT q = p;
-    q.getVector3fMap() = reflectPoint(plane, p.getVector3fMap());
-    q.getNormalVector3fMap() = reflectDirection(plane, p.getNormalVector3fMap());
-    mirrored->push_back(q);
-  }
+  auto points = std::make_shared<Cloud>();
+  points->reserve(segment.size());
+  for (int index : segment) points->push_back(cloud.points[index]);
+  pcl::KdTreeFLANN<PointT> tree;
+  tree.setInputCloud(points);
 
-  auto target_tree = std::make_shared<pcl::search::KdTree<PointT>>();
-  target_tree->setInputCloud(target);
-  if (countWithNeighbour(*target_tree, *mirrored, refinement.icp_max_correspondence) <
-      kMinMatchedFraction * static_cast<float>(mirrored->size())) {
-    return plane;
-  }
+  const int n = static_cast<int>(points->size());
+  const float max_squared = refinement.icp_max_correspondence * refinement.icp_max_correspondence;
+  SymmetryPlane current = plane;
+  std::vector<Match> best_for_target(n);
+  std::vector<int> target_of(n);
+  std::vector<int> index(1);
+  std::vector<float> squared(1);
+  for (int iteration = 0; iteration < refinement.icp_iterations; ++iteration) {
+    // Nearest compatible counterpart of each mirrored point; one-to-one: a target keeps only its
+    // closest source.
+    std::fill(best_for_target.begin(), best_for_target.end(), Match());
+    for (int i = 0; i < n; ++i) {
+      target_of[i] = -1;
+      const PointT& p = points->points[i];
+      PointT mirrored;
+      mirrored.getVector3fMap() = reflectPoint(current, p.getVector3fMap());
+      if (tree.nearestKSearch(mirrored, 1, index, squared) != 1 || squared[0] > max_squared) continue;
+      const Eigen::Vector3f mirrored_normal = reflectDirection(current, p.getNormalVector3fMap());
+      if (mirrored_normal.dot(points->points[index[0]].getNormalVector3fMap()) < kMinNormalCos) continue;
+      Match& match = best_for_target[index[0]];
+      if (squared[0] < match.squared_distance) match = {i, squared[0]};
+    }
+    int matched = 0;
+    for (int t = 0; t < n; ++t) {
+      if (best_for_target[t].source >= 0) {
+        target_of[best_for_target[t].source] = t;
+        ++matched;
+      }
+    }
+    if (matched < kMinMatchedFraction * static_cast<float>(n)) return plane;
 
-  pcl::IterativeClosestPoint<PointT, PointT> icp;
-  icp.setSearchMethodTarget(target_tree, true);  // built above: do not build it again
-  icp.setTransformationEstimation(
-      std::make_shared<pcl::registration::TransformationEstimationPointToPlaneLLS<PointT, PointT>>());
-  icp.addCorrespondenceRejector(std::make_shared<pcl::registration::CorrespondenceRejectorOneToOne>());
-  icp.setMaximumIterations(refinement.icp_iterations);
-  icp.setMaxCorrespondenceDistance(refinement.icp_max_correspondence);
-  icp.setInputSource(mirrored);
-  icp.setInputTarget(target);
-  Cloud aligned;
-  icp.align(aligned);
-  if (!icp.hasConverged()) return plane;
-
-  // Point i and the aligned image of its reflection are mirror images under the refined plane.
-  std::vector<PlaneSample> samples;
-  samples.reserve(segment.size());
-  for (std::size_t i = 0; i < segment.size(); ++i) {
-    const Eigen::Vector3f p = target->points[i].getVector3fMap();
-    const Eigen::Vector3f image = aligned.points[i].getVector3fMap();
-    if ((image - p).norm() < detection.min_match_distance) continue;  // too close to the plane to tell
-    PlaneSample sample;
-    sample.plane = canonicalPlane(bisectorPlane(p, image));
-    samples.push_back(sample);
+    // Gauss-Newton on (a, b, delta_d) with normal n + a u + b v, residual
+    // r = n_q . (M(p) - q), M(p) = p - 2 (n . p + d) n.
+    Eigen::Vector3f u, v;
+    tangentBasis(current.normal, u, v);
+    Eigen::Matrix3f jtj = Eigen::Matrix3f::Zero();
+    Eigen::Vector3f jtr = Eigen::Vector3f::Zero();
+    for (int i = 0; i < n; ++i) {
+      if (target_of[i] < 0) continue;
+      const Eigen::Vector3f p = points->points[i].getVector3fMap();
+      const PointT& target = points->points[target_of[i]];
+      const Eigen::Vector3f q = target.getVector3fMap();
+      const Eigen::Vector3f nq = target.getNormalVector3fMap();
+      const float s = signedDistance(current, p);
+      const float residual = nq.dot(reflectPoint(current, p) - q);
+      const float normal_dot = nq.dot(current.normal);
+      const Eigen::Vector3f jacobian(-2.0f * (u.dot(p) * normal_dot + s * nq.dot(u)),
+                                     -2.0f * (v.dot(p) * normal_dot + s * nq.dot(v)), -2.0f * normal_dot);
+      jtj += jacobian * jacobian.transpose();
+      jtr += jacobian * residual;
+    }
+    // A small damping keeps directions the segment does not constrain (a flat patch) still.
+    jtj += 1e-6f * Eigen::Matrix3f::Identity() * std::max(1.0f, jtj.trace());
+    const Eigen::Vector3f step = -jtj.ldlt().solve(jtr);
+    if (!step.allFinite()) return plane;
+    current.normal = (current.normal + step.x() * u + step.y() * v).normalized();
+    current.distance += step.z();
+    if (step.norm() < kConvergedStep) break;
   }
-  const auto modes = meanShiftPlanes(samples, detection.mean_shift_angle_deg, detection.mean_shift_distance);
-  if (modes.empty()) return plane;
-  const SymmetryPlane refined = modes.front().plane;
-  if (planeAngleDeg(refined, plane) > kMaxRefinementAngleDeg) return plane;
-  return refined;
+  current = canonicalPlane(current);
+  if (planeAngleDeg(current, plane) > kMaxRefinementAngleDeg) return plane;
+  return current;
 }
 
 }  // namespace symmetry_segmentation

@@ -10,6 +10,7 @@
 #include "symmetry_segmentation/symmetry/segment_filter.h"
 #include "symmetry_segmentation/symmetry/symmetric_graph_cut.h"
 #include "symmetry_segmentation/symmetry/symmetry_hypotheses.h"
+#include "symmetry_segmentation/symmetry/upright_hypotheses.h"
 
 namespace symmetry_segmentation {
 
@@ -26,9 +27,15 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
   result.timing_ms.emplace_back("occupancy", stage.lap());
 
   const Cloud& cloud = *prepared.cloud;
-  const auto curves = extractNormalEdgeCurves(cloud, params_.detection);
+  const std::vector<int> surfaces = mergedSegmentLabels(cloud, params_.detection);
+  const auto curves = extractNormalEdgeCurves(cloud, surfaces, params_.detection);
   result.timing_ms.emplace_back("curves", stage.lap());
-  const auto hypotheses = detectSymmetryHypotheses(cloud, curves, params_.detection);
+  auto hypotheses = detectSymmetryHypotheses(cloud, curves, params_.detection);
+  if (params_.detection.upright_hypotheses && prepared.has_table) {
+    const Eigen::Vector3f up = prepared.table_plane.head<3>().normalized();
+    appendDistinctHypotheses(hypotheses, uprightHypotheses(cloud, surfaces, up, UprightHypothesisParams()),
+                             params_.detection.merge_plane_angle_deg, params_.detection.merge_plane_distance);
+  }
   result.timing_ms.emplace_back("hypotheses", stage.lap());
 
   std::optional<PlaneCoefficients> table;

@@ -42,5 +42,8 @@ void useEdgeTangents(const Cloud& cloud, const std::vector<int>& labels, const S
 
 /// All of stage 1 on a working cloud with normals (linkCurves with labels, then useEdgeTangents).
 std::vector<Curve> extractNormalEdgeCurves(const Cloud& cloud, const SymmetryDetectionParams& params);
+/// As above, from merged-segment labels already computed (mergedSegmentLabels).
+std::vector<Curve> extractNormalEdgeCurves(const Cloud& cloud, const std::vector<int>& labels,
+                                           const SymmetryDetectionParams& params);
 
 }  // namespace symmetry_segmentation

@@ -23,7 +23,9 @@ struct SymmetryDetectionParams {
   int min_plane_support = 4;              ///< Matched point pairs a plane needs.
   float merge_plane_angle_deg = 6.0f;     ///< Near-equal planes from different curve pairs are merged.
   float merge_plane_distance = 0.015f;    ///< (m)
-  int max_hypotheses = 80;                ///< Strongest hypotheses kept.
+  int max_hypotheses = 80;                ///< Strongest curve hypotheses kept.
+  bool upright_hypotheses = true;         ///< Also propose vertical planes from single surfaces
+                                          ///< (needs the table plane; see upright_hypotheses.h).
 };
 
 /// Stage 3: graph cut per hypothesis (paper eq. 7-12).

@@ -1,0 +1,41 @@
+#pragma once
+// Stage 2b: symmetry planes proposed from single smooth surfaces under the gravity prior of a
+// tabletop: objects stand on the table, so most of their symmetry planes are vertical. The curve
+// matching of stage 2 needs a pair of normal edges; a bottle or a can offers almost none (its
+// rim and a gentle shoulder), so it is proposed from its surfaces instead:
+//  - a curved surface whose normals meet a common vertical axis (surface of revolution): the
+//    vertical plane through that axis and the surface's centre;
+//  - a vertical flat face: the vertical plane bisecting it;
+//  - a horizontal flat face: the vertical planes along its two principal axes.
+// These are hypotheses only; the graph cut, refinement and filter judge them as any other.
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "symmetry_segmentation/scene.h"
+#include "symmetry_segmentation/symmetry/symmetry_hypotheses.h"
+
+namespace symmetry_segmentation {
+
+struct UprightHypothesisParams {
+  int min_surface_points = 20;         ///< Smaller merged surfaces propose nothing.
+  float flat_curvature = 0.02f;        ///< Surfaces with less PCA curvature propose face planes.
+  float flat_normal_spread_deg = 10.0f;///< Surfaces whose normals spread more propose an axis plane.
+  float face_tilt_deg = 20.0f;         ///< Faces within this of vertical / horizontal propose planes.
+  float max_axis_residual = 0.01f;     ///< RMS distance of normal lines from the fitted axis (m).
+  float max_axis_radius = 0.25f;       ///< Farther axes are not an object's (m).
+  float min_normal_spread_deg = 20.0f; ///< Normals must turn this much around the axis to locate it.
+};
+
+/// Planes proposed from each merged surface (labels from mergedSegmentLabels; 0 = none). `up` is
+/// the unit normal of the supporting plane. Each hypothesis' support is its surface's size.
+/// Deterministic, ordered by surface label.
+std::vector<SymmetryHypothesis> uprightHypotheses(const Cloud& cloud, const std::vector<int>& labels,
+                                                  const Eigen::Vector3f& up, const UprightHypothesisParams& params);
+
+/// `extra` hypotheses appended to `base` unless near-equal (angle and offset) to one already there.
+void appendDistinctHypotheses(std::vector<SymmetryHypothesis>& base, const std::vector<SymmetryHypothesis>& extra,
+                              float max_angle_deg, float max_distance);
+
+}  // namespace symmetry_segmentation

@@ -1,0 +1,148 @@
+// Stage 2b of the symmetry method: vertical planes proposed from single surfaces.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "symmetry_segmentation/symmetry/symmetry_plane.h"
+#include "symmetry_segmentation/symmetry/upright_hypotheses.h"
+#include "test_clouds.h"
+
+namespace ss = symmetry_segmentation;
+
+namespace {
+
+const Eigen::Vector3f kUp = Eigen::Vector3f::UnitZ();
+
+ss::PointT point(const Eigen::Vector3f& p, const Eigen::Vector3f& n) {
+  ss::PointT q;
+  q.getVector3fMap() = p;
+  q.getNormalVector3fMap() = n;
+  return q;
+}
+
+/// Side of a vertical cylinder seen over [from, to] radians, as `strips` surfaces (labels
+/// first_label, first_label + 1, ...), the way supervoxel merging often splits a can.
+void addCylinderSide(ss::Cloud& cloud, std::vector<int>& labels, const Eigen::Vector3f& axis, float radius,
+                     float height, float from, float to, int strips, int first_label) {
+  const int columns = static_cast<int>((to - from) * radius / 0.008f);
+  for (int c = 0; c <= columns; ++c) {
+    const float angle = from + (to - from) * static_cast<float>(c) / static_cast<float>(columns);
+    const Eigen::Vector3f normal(std::cos(angle), std::sin(angle), 0.0f);
+    const int strip = std::min(strips - 1, c * strips / (columns + 1));
+    for (float z = 0.005f; z < height; z += 0.008f) {
+      cloud.push_back(point(axis + radius * normal + Eigen::Vector3f(0, 0, z), normal));
+      labels.push_back(first_label + strip);
+    }
+  }
+}
+
+bool hasPlane(const std::vector<ss::SymmetryHypothesis>& hypotheses, const Eigen::Vector3f& normal,
+              const Eigen::Vector3f& through, float angle_deg, float distance) {
+  ss::SymmetryPlane truth;
+  truth.normal = normal.normalized();
+  truth.distance = -truth.normal.dot(through);
+  return std::any_of(hypotheses.begin(), hypotheses.end(), [&](const ss::SymmetryHypothesis& h) {
+    return ss::planeAngleDeg(h.plane, truth) < angle_deg && ss::planeDistanceDifference(h.plane, truth) < distance;
+  });
+}
+
+float distanceToPlane(const ss::SymmetryPlane& plane, const Eigen::Vector3f& p) {
+  return std::fabs(ss::signedDistance(plane, p));
+}
+
+}  // namespace
+
+TEST(UprightHypotheses, CylinderStripsProposeThePlaneBisectingWhatWasSeen) {
+  // A can seen over 200 degrees centred on +y, split into two surfaces: each strip alone
+  // would bisect itself; the plane must go through the axis and bisect the whole seen arc.
+  ss::Cloud cloud;
+  std::vector<int> labels;
+  const Eigen::Vector3f axis(0.2f, -0.1f, 0.0f);
+  const float centre = static_cast<float>(M_PI) / 2.0f;
+  const float half = 100.0f * static_cast<float>(M_PI) / 180.0f;
+  addCylinderSide(cloud, labels, axis, 0.04f, 0.15f, centre - half, centre + half, 2, 1);
+
+  const auto hypotheses = ss::uprightHypotheses(cloud, labels, kUp, ss::UprightHypothesisParams{});
+  ASSERT_FALSE(hypotheses.empty());
+  bool through_axis = false;
+  for (const auto& h : hypotheses) {
+    EXPECT_LT(std::fabs(h.plane.normal.dot(kUp)), 1e-4f) << "every proposal is vertical";
+    through_axis = through_axis || distanceToPlane(h.plane, axis) < 0.003f;
+  }
+  EXPECT_TRUE(through_axis);
+  // The seen arc is symmetric about the plane x = axis.x (normal along x).
+  EXPECT_TRUE(hasPlane(hypotheses, Eigen::Vector3f::UnitX(), axis, 8.0f, 0.003f));
+}
+
+TEST(UprightHypotheses, BoxFacesProposeTheirBisectors) {
+  ss::Cloud cloud;
+  test_clouds::addBox(cloud, Eigen::Vector3f(0.1f, 0.2f, 0.0f), Eigen::Vector3f(0.12f, 0.08f, 0.1f), 0.008f);
+  // One surface per face, told apart by normal.
+  std::vector<int> labels;
+  for (const auto& p : cloud.points) {
+    const Eigen::Vector3f n = p.getNormalVector3fMap();
+    int label = 1;
+    for (const Eigen::Vector3f& axis : {Eigen::Vector3f::UnitX(), Eigen::Vector3f::UnitY(), Eigen::Vector3f::UnitZ()}) {
+      if (n.dot(axis) > 0.9f) break;
+      ++label;
+      if (n.dot(axis) < -0.9f) break;
+      ++label;
+    }
+    labels.push_back(label);
+  }
+  const auto hypotheses = ss::uprightHypotheses(cloud, labels, kUp, ss::UprightHypothesisParams{});
+  const Eigen::Vector3f centre(0.16f, 0.24f, 0.05f);
+  EXPECT_TRUE(hasPlane(hypotheses, Eigen::Vector3f::UnitX(), centre, 2.0f, 0.005f));
+  EXPECT_TRUE(hasPlane(hypotheses, Eigen::Vector3f::UnitY(), centre, 2.0f, 0.005f));
+  for (const auto& h : hypotheses) EXPECT_LT(std::fabs(h.plane.normal.dot(kUp)), 1e-4f);
+}
+
+TEST(UprightHypotheses, SmallSurfacesAndUnlabelledPointsProposeNothing) {
+  ss::Cloud cloud;
+  std::vector<int> labels;
+  addCylinderSide(cloud, labels, Eigen::Vector3f::Zero(), 0.04f, 0.15f, 0.0f, 3.0f, 1, 1);
+  std::vector<int> unlabelled(labels.size(), 0);
+  EXPECT_TRUE(ss::uprightHypotheses(cloud, unlabelled, kUp, ss::UprightHypothesisParams{}).empty());
+  ss::UprightHypothesisParams strict;
+  strict.min_surface_points = static_cast<int>(cloud.size()) + 1;
+  EXPECT_TRUE(ss::uprightHypotheses(cloud, labels, kUp, strict).empty());
+  EXPECT_TRUE(ss::uprightHypotheses(ss::Cloud(), {}, kUp, ss::UprightHypothesisParams{}).empty());
+}
+
+TEST(UprightHypotheses, ASurfaceWhoseNormalsMeetNoCommonAxisProposesNoAxisPlane) {
+  // A saddle-like ruled surface: normals turn but their horizontal lines do not meet.
+  ss::Cloud cloud;
+  std::vector<int> labels;
+  for (float s = -0.06f; s <= 0.06f; s += 0.006f) {
+    for (float z = 0.0f; z < 0.1f; z += 0.006f) {
+      const float twist = 8.0f * (z - 0.05f);  // normal turns with height, not around an axis
+      const Eigen::Vector3f n(std::cos(twist), std::sin(twist), 0.0f);
+      const Eigen::Vector3f along(-n.y(), n.x(), 0.0f);
+      cloud.push_back(point(Eigen::Vector3f(0.0f, 0.0f, z) + s * along, n));
+      labels.push_back(1);
+    }
+  }
+  ss::UprightHypothesisParams params;
+  params.flat_curvature = 0.0f;  // only the axis test may propose
+  EXPECT_TRUE(ss::uprightHypotheses(cloud, labels, kUp, params).empty());
+}
+
+TEST(UprightHypotheses, AppendDistinctSkipsNearEqualPlanes) {
+  auto make = [](const Eigen::Vector3f& n, float d) {
+    ss::SymmetryHypothesis h;
+    h.plane.normal = n.normalized();
+    h.plane.distance = d;
+    return h;
+  };
+  std::vector<ss::SymmetryHypothesis> base = {make(Eigen::Vector3f::UnitX(), 0.1f)};
+  const std::vector<ss::SymmetryHypothesis> extra = {
+      make(Eigen::Vector3f(1.0f, 0.02f, 0.0f), 0.105f),  // ~1 degree, 5 mm: the same plane
+      make(-Eigen::Vector3f::UnitX(), -0.1f),            // the same plane, flipped
+      make(Eigen::Vector3f::UnitX(), 0.2f),              // parallel, 10 cm away
+      make(Eigen::Vector3f::UnitY(), 0.1f)};
+  ss::appendDistinctHypotheses(base, extra, 6.0f, 0.015f);
+  ASSERT_EQ(base.size(), 3u);
+  EXPECT_FLOAT_EQ(base[1].plane.distance, 0.2f);
+  EXPECT_EQ(base[2].plane.normal, Eigen::Vector3f::UnitY());
+}
