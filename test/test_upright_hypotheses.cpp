@@ -63,7 +63,7 @@ TEST(UprightHypotheses, CylinderStripsProposeThePlaneBisectingWhatWasSeen) {
   const float half = 100.0f * static_cast<float>(M_PI) / 180.0f;
   addCylinderSide(cloud, labels, axis, 0.04f, 0.15f, centre - half, centre + half, 2, 1);
 
-  const auto hypotheses = ss::uprightHypotheses(cloud, labels, kUp, ss::UprightHypothesisParams{});
+  const auto hypotheses = ss::uprightHypotheses(cloud, labels, kUp, ss::UprightHypothesisParams{}, ss::landingScore(cloud));
   ASSERT_FALSE(hypotheses.empty());
   bool through_axis = false;
   for (const auto& h : hypotheses) {
@@ -91,7 +91,7 @@ TEST(UprightHypotheses, BoxFacesProposeTheirBisectors) {
     }
     labels.push_back(label);
   }
-  const auto hypotheses = ss::uprightHypotheses(cloud, labels, kUp, ss::UprightHypothesisParams{});
+  const auto hypotheses = ss::uprightHypotheses(cloud, labels, kUp, ss::UprightHypothesisParams{}, ss::landingScore(cloud));
   const Eigen::Vector3f centre(0.16f, 0.24f, 0.05f);
   EXPECT_TRUE(hasPlane(hypotheses, Eigen::Vector3f::UnitX(), centre, 2.0f, 0.005f));
   EXPECT_TRUE(hasPlane(hypotheses, Eigen::Vector3f::UnitY(), centre, 2.0f, 0.005f));
@@ -103,11 +103,12 @@ TEST(UprightHypotheses, SmallSurfacesAndUnlabelledPointsProposeNothing) {
   std::vector<int> labels;
   addCylinderSide(cloud, labels, Eigen::Vector3f::Zero(), 0.04f, 0.15f, 0.0f, 3.0f, 1, 1);
   std::vector<int> unlabelled(labels.size(), 0);
-  EXPECT_TRUE(ss::uprightHypotheses(cloud, unlabelled, kUp, ss::UprightHypothesisParams{}).empty());
+  EXPECT_TRUE(ss::uprightHypotheses(cloud, unlabelled, kUp, ss::UprightHypothesisParams{}, ss::landingScore(cloud)).empty());
   ss::UprightHypothesisParams strict;
   strict.min_surface_points = static_cast<int>(cloud.size()) + 1;
-  EXPECT_TRUE(ss::uprightHypotheses(cloud, labels, kUp, strict).empty());
-  EXPECT_TRUE(ss::uprightHypotheses(ss::Cloud(), {}, kUp, ss::UprightHypothesisParams{}).empty());
+  EXPECT_TRUE(ss::uprightHypotheses(cloud, labels, kUp, strict, ss::landingScore(cloud)).empty());
+  const ss::Cloud empty;
+  EXPECT_TRUE(ss::uprightHypotheses(empty, {}, kUp, ss::UprightHypothesisParams{}, ss::landingScore(empty)).empty());
 }
 
 TEST(UprightHypotheses, ASurfaceWhoseNormalsMeetNoCommonAxisProposesNoAxisPlane) {
@@ -125,7 +126,7 @@ TEST(UprightHypotheses, ASurfaceWhoseNormalsMeetNoCommonAxisProposesNoAxisPlane)
   }
   ss::UprightHypothesisParams params;
   params.flat_curvature = 0.0f;  // only the axis test may propose
-  EXPECT_TRUE(ss::uprightHypotheses(cloud, labels, kUp, params).empty());
+  EXPECT_TRUE(ss::uprightHypotheses(cloud, labels, kUp, params, ss::landingScore(cloud)).empty());
 }
 
 TEST(UprightHypotheses, AppendDistinctSkipsNearEqualPlanes) {

@@ -27,21 +27,28 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
   result.timing_ms.emplace_back("occupancy", stage.lap());
 
   const Cloud& cloud = *prepared.cloud;
+  std::optional<PlaneCoefficients> table;
+  if (prepared.has_table) table = prepared.table_plane;
+  const SymmetricGraphCut graph(prepared.cloud, occupancy, table, params_.cut);
+  result.timing_ms.emplace_back("graph", stage.lap());
+
   const std::vector<int> surfaces = mergedSegmentLabels(cloud, params_.detection);
   const auto curves = extractNormalEdgeCurves(cloud, surfaces, params_.detection);
   result.timing_ms.emplace_back("curves", stage.lap());
   auto hypotheses = detectSymmetryHypotheses(cloud, curves, params_.detection);
   if (params_.detection.upright_hypotheses && prepared.has_table) {
     const Eigen::Vector3f up = prepared.table_plane.head<3>().normalized();
-    appendDistinctHypotheses(hypotheses, uprightHypotheses(cloud, surfaces, up, UprightHypothesisParams()),
+    // The data term's own verdict: a match counts by its normal agreement, free space against.
+    const ReflectionScore score = [&graph](int index, const SymmetryPlane& plane) {
+      const ReflectionEvidence evidence = graph.dataTerm(index, plane);
+      if (evidence.landing == ReflectionLanding::OnPoint) return evidence.foreground_strength;
+      return evidence.landing == ReflectionLanding::Free ? -evidence.cost_foreground : 0.0f;
+    };
+    appendDistinctHypotheses(hypotheses, uprightHypotheses(cloud, surfaces, up, UprightHypothesisParams(), score),
                              params_.detection.merge_plane_angle_deg, params_.detection.merge_plane_distance);
   }
   result.timing_ms.emplace_back("hypotheses", stage.lap());
 
-  std::optional<PlaneCoefficients> table;
-  if (prepared.has_table) table = prepared.table_plane;
-  const SymmetricGraphCut graph(prepared.cloud, occupancy, table, params_.cut);
-  result.timing_ms.emplace_back("graph", stage.lap());
 
   // Hypotheses are independent; results are stored by index, so any thread count gives the
   // same answer.

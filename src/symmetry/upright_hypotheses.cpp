@@ -1,7 +1,10 @@
 // Stage 2b: vertical symmetry planes proposed from single surfaces (see the header for why).
 #include "symmetry_segmentation/symmetry/upright_hypotheses.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <memory>
 
 #include <Eigen/Eigenvalues>
 
@@ -81,11 +84,12 @@ bool fitVerticalAxis(const Cloud& cloud, const std::vector<int>& points, const E
   return std::sqrt(squared_residual / used) < params.max_axis_residual && radius < params.max_axis_radius;
 }
 
-/// Of the vertical planes through the axis, the one under which most scene points around the
-/// axis (the object the surface belongs to, as far as it was seen) reflect onto scene points.
-/// A surface is often only a strip of its object, so the strip alone would pick its own bisector.
-SymmetryHypothesis bestPlaneThroughAxis(const Cloud& cloud, const PointGrid& grid, const Eigen::Vector3f& axis_point,
-                                        float axis_radius, const Eigen::Vector3f& up, int support) {
+/// The vertical plane through the axis under which the scene points around it (the object the
+/// surface belongs to, as far as it was seen) are best explained by their reflections. A surface
+/// is often only a strip of its object, so the strip alone would pick its own bisector.
+SymmetryHypothesis bestPlaneThroughAxis(const Cloud& cloud, const ReflectionScore& score,
+                                        const Eigen::Vector3f& axis_point, float axis_radius, const Eigen::Vector3f& up,
+                                        int support) {
   const float reach = 1.2f * axis_radius + kLandingRadius;
   std::vector<int> around;
   for (std::size_t i = 0; i < cloud.size(); ++i) {
@@ -96,30 +100,33 @@ SymmetryHypothesis bestPlaneThroughAxis(const Cloud& cloud, const PointGrid& gri
   const Eigen::Vector3f helper = std::fabs(up.x()) < 0.9f ? Eigen::Vector3f::UnitX() : Eigen::Vector3f::UnitY();
   const Eigen::Vector3f e1 = up.cross(helper).normalized();
   const Eigen::Vector3f e2 = up.cross(e1);
-  SymmetryHypothesis best;
-  int best_landed = -1;
+  std::vector<SymmetryHypothesis> planes;
+  std::vector<float> totals;
   for (int k = 0; k < kAxisPlaneAngles; ++k) {
     const float angle = static_cast<float>(M_PI) * static_cast<float>(k) / kAxisPlaneAngles;
-    const SymmetryHypothesis candidate = verticalPlane(axis_point, std::cos(angle) * e1 + std::sin(angle) * e2, up, support);
-    int landed = 0;
-    for (int i : around) {
-      const Eigen::Vector3f reflected = reflectPoint(candidate.plane, cloud.points[i].getVector3fMap());
-      bool hit = false;
-      grid.forEachWithin(reflected, kLandingRadius, [&](int, float) { hit = true; });
-      landed += hit ? 1 : 0;
-    }
-    if (landed > best_landed) {
-      best_landed = landed;
-      best = candidate;
-    }
+    planes.push_back(verticalPlane(axis_point, std::cos(angle) * e1 + std::sin(angle) * e2, up, support));
+    float total = 0.0f;
+    for (int i : around) total += score(i, planes.back().plane);
+    totals.push_back(total);
   }
-  return best;
+  return planes[std::max_element(totals.begin(), totals.end()) - totals.begin()];
 }
 
 }  // namespace
 
+ReflectionScore landingScore(const Cloud& cloud) {
+  auto grid = std::make_shared<const PointGrid>(cloud, kLandingRadius);
+  return [&cloud, grid](int index, const SymmetryPlane& plane) {
+    const Eigen::Vector3f reflected = reflectPoint(plane, cloud.points[index].getVector3fMap());
+    bool hit = false;
+    grid->forEachWithin(reflected, kLandingRadius, [&](int, float) { hit = true; });
+    return hit ? 1.0f : 0.0f;
+  };
+}
+
 std::vector<SymmetryHypothesis> uprightHypotheses(const Cloud& cloud, const std::vector<int>& labels,
-                                                  const Eigen::Vector3f& up, const UprightHypothesisParams& params) {
+                                                  const Eigen::Vector3f& up, const UprightHypothesisParams& params,
+                                                  const ReflectionScore& score) {
   int max_label = 0;
   for (int label : labels) max_label = std::max(max_label, label);
   std::vector<Surface> surfaces(max_label + 1);
@@ -127,7 +134,6 @@ std::vector<SymmetryHypothesis> uprightHypotheses(const Cloud& cloud, const std:
     if (labels[i] > 0) surfaces[labels[i]].points.push_back(static_cast<int>(i));
   }
 
-  const PointGrid grid(cloud, kLandingRadius);
   std::vector<SymmetryHypothesis> result;
   const float vertical_sin = std::sin(params.face_tilt_deg * kDegToRad);
   const float horizontal_cos = std::cos(params.face_tilt_deg * kDegToRad);
@@ -173,7 +179,7 @@ std::vector<SymmetryHypothesis> uprightHypotheses(const Cloud& cloud, const std:
     if (!fitVerticalAxis(cloud, surface.points, up, params, axis_point, axis_radius)) continue;
     // Any vertical plane through the axis is a symmetry plane of a surface of revolution; the
     // one that maps most of the seen part of the surface onto itself bisects what was seen.
-    result.push_back(bestPlaneThroughAxis(cloud, grid, axis_point, axis_radius, up, n));
+    result.push_back(bestPlaneThroughAxis(cloud, score, axis_point, axis_radius, up, n));
   }
   return result;
 }

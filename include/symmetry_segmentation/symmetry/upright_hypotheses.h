@@ -9,6 +9,7 @@
 //  - a horizontal flat face: the vertical planes along its two principal axes.
 // These are hypotheses only; the graph cut, refinement and filter judge them as any other.
 
+#include <functional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -28,11 +29,21 @@ struct UprightHypothesisParams {
   float min_normal_spread_deg = 20.0f; ///< Normals must turn this much around the axis to locate it.
 };
 
+/// How well point `index` is explained by its reflection about `plane`: positive when it lands on
+/// a matching point, negative when it lands in free space, 0 when nothing is known.
+using ReflectionScore = std::function<float(int index, const SymmetryPlane& plane)>;
+
+/// Scores a reflection +1 when it lands within 1 cm of a cloud point, else 0 (no free-space
+/// knowledge). For callers without an occupancy map.
+ReflectionScore landingScore(const Cloud& cloud);
+
 /// Planes proposed from each merged surface (labels from mergedSegmentLabels; 0 = none). `up` is
-/// the unit normal of the supporting plane. Each hypothesis' support is its surface's size.
-/// Deterministic, ordered by surface label.
+/// the unit normal of the supporting plane; `score` picks the orientation of planes through an
+/// axis (the mug's plane goes through its handle: other orientations mirror it into free space).
+/// Each hypothesis' support is its surface's size. Deterministic, ordered by surface label.
 std::vector<SymmetryHypothesis> uprightHypotheses(const Cloud& cloud, const std::vector<int>& labels,
-                                                  const Eigen::Vector3f& up, const UprightHypothesisParams& params);
+                                                  const Eigen::Vector3f& up, const UprightHypothesisParams& params,
+                                                  const ReflectionScore& score);
 
 /// `extra` hypotheses appended to `base` unless near-equal (angle and offset) to one already there.
 void appendDistinctHypotheses(std::vector<SymmetryHypothesis>& base, const std::vector<SymmetryHypothesis>& extra,
