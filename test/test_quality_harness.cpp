@@ -70,9 +70,12 @@ TEST(QualityHarness, BaselinesOnTheGeneratedSet) {
   // Objects pushed together defeat it: that is why the other kinds exist.
   EXPECT_LT(rows.at("euclidean/touching/0.5").recall, rows.at("euclidean/isolated/0.5").recall);
   EXPECT_LT(rows.at("euclidean/stacked/0.5").recall, rows.at("euclidean/isolated/0.5").recall);
-  // The symmetry method must at least find most well-separated objects roughly.
-  EXPECT_GE(rows.at("symmetry/isolated/0.5").recall, 0.75);
-  EXPECT_GE(rows.at("symmetry/overall/0.5").precision, 0.7);
+  // The symmetry method (default, paper-strict thresholds) finds nearly all well-separated
+  // objects roughly and about half of all objects exactly. Round objects have few normal
+  // edges: before the upright hypotheses these were 0.75 and 0.40.
+  EXPECT_GE(rows.at("symmetry/isolated/0.5").recall, 0.85);
+  EXPECT_GE(rows.at("symmetry/overall/0.5").precision, 0.85);
+  EXPECT_GE(rows.at("symmetry/overall/0.9").f, 0.5);
   // Stricter thresholds can only lose matches.
   for (const char* method : {"symmetry", "euclidean", "lccp"}) {
     const std::string prefix = std::string(method) + "/overall/";
