@@ -12,8 +12,8 @@
 #include <limits>
 
 #include <Eigen/Cholesky>
-#include <pcl/kdtree/kdtree_flann.h>
 
+#include "symmetry_segmentation/symmetry/point_grid.h"
 #include "symmetry_segmentation/symmetry/symmetry_plane.h"
 
 namespace symmetry_segmentation {
@@ -28,11 +28,29 @@ constexpr float kMinMatchedFraction = 0.5f;
 // Mirrored and matched normals further apart than this are different surfaces.
 constexpr float kMinNormalCos = 0.7f;  // ~45 degrees
 constexpr float kConvergedStep = 1e-5f;
+// Most mirrored points land within a voxel of their counterpart: search that close first.
+constexpr float kNearRadius = 0.01f;
 
 struct Match {
   int source = -1;
   float squared_distance = std::numeric_limits<float>::max();
 };
+
+/// Index and squared distance of the grid point nearest to `query` within `radius`, or -1.
+int nearestWithin(const PointGrid& grid, const Eigen::Vector3f& query, float radius, float& squared_distance) {
+  int nearest = -1;
+  squared_distance = std::numeric_limits<float>::max();
+  for (const float r : {std::min(kNearRadius, radius), radius}) {
+    grid.forEachWithin(query, r, [&](int index, float squared) {
+      if (squared < squared_distance) {
+        squared_distance = squared;
+        nearest = index;
+      }
+    });
+    if (nearest >= 0) break;
+  }
+  return nearest;
+}
 
 /// Two unit vectors spanning the plane perpendicular to n.
 void tangentBasis(const Eigen::Vector3f& n, Eigen::Vector3f& u, Eigen::Vector3f& v) {
@@ -49,16 +67,14 @@ SymmetryPlane refinePlane(const Cloud& cloud, const std::vector<int>& segment, c
   auto points = std::make_shared<Cloud>();
   points->reserve(segment.size());
   for (int index : segment) points->push_back(cloud.points[index]);
-  pcl::KdTreeFLANN<PointT> tree;
-  tree.setInputCloud(points);
+  // A grid answers these fixed-radius queries faster than a kd-tree (see point_grid.h).
+  const PointGrid grid(*points, kNearRadius);
 
   const int n = static_cast<int>(points->size());
   const float max_squared = refinement.icp_max_correspondence * refinement.icp_max_correspondence;
   SymmetryPlane current = plane;
   std::vector<Match> best_for_target(n);
   std::vector<int> target_of(n);
-  std::vector<int> index(1);
-  std::vector<float> squared(1);
   for (int iteration = 0; iteration < refinement.icp_iterations; ++iteration) {
     // Nearest compatible counterpart of each mirrored point; one-to-one: a target keeps only its
     // closest source.
@@ -66,13 +82,14 @@ SymmetryPlane refinePlane(const Cloud& cloud, const std::vector<int>& segment, c
     for (int i = 0; i < n; ++i) {
       target_of[i] = -1;
       const PointT& p = points->points[i];
-      PointT mirrored;
-      mirrored.getVector3fMap() = reflectPoint(current, p.getVector3fMap());
-      if (tree.nearestKSearch(mirrored, 1, index, squared) != 1 || squared[0] > max_squared) continue;
+      float squared = 0.0f;
+      const int target = nearestWithin(grid, reflectPoint(current, p.getVector3fMap()),
+                                       refinement.icp_max_correspondence, squared);
+      if (target < 0 || squared > max_squared) continue;
       const Eigen::Vector3f mirrored_normal = reflectDirection(current, p.getNormalVector3fMap());
-      if (mirrored_normal.dot(points->points[index[0]].getNormalVector3fMap()) < kMinNormalCos) continue;
-      Match& match = best_for_target[index[0]];
-      if (squared[0] < match.squared_distance) match = {i, squared[0]};
+      if (mirrored_normal.dot(points->points[target].getNormalVector3fMap()) < kMinNormalCos) continue;
+      Match& match = best_for_target[target];
+      if (squared < match.squared_distance) match = {i, squared};
     }
     int matched = 0;
     for (int t = 0; t < n; ++t) {
