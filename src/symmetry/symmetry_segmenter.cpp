@@ -13,6 +13,13 @@
 #include "symmetry_segmentation/symmetry/upright_hypotheses.h"
 
 namespace symmetry_segmentation {
+namespace {
+
+// Weight of a matched reflection against one contradicted by free space when orienting a plane
+// through an axis.
+constexpr float kMatchTieBreak = 0.05f;
+
+}  // namespace
 
 SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
   Stopwatch total, stage;
@@ -38,10 +45,13 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
   auto hypotheses = detectSymmetryHypotheses(cloud, curves, params_.detection);
   if (params_.detection.upright_hypotheses && prepared.has_table) {
     const Eigen::Vector3f up = prepared.table_plane.head<3>().normalized();
-    // The data term's own verdict: a match counts by its normal agreement, free space against.
+    // The data term's own verdict. Every plane through a true axis is a symmetry, so what
+    // decides is contradiction (reflections into free space: a mug's handle mirrored beside
+    // it); matches only break ties, else the bisector of whatever arc the views happened to
+    // cover would win.
     const ReflectionScore score = [&graph](int index, const SymmetryPlane& plane) {
       const ReflectionEvidence evidence = graph.dataTerm(index, plane);
-      if (evidence.landing == ReflectionLanding::OnPoint) return evidence.foreground_strength;
+      if (evidence.landing == ReflectionLanding::OnPoint) return kMatchTieBreak * evidence.foreground_strength;
       return evidence.landing == ReflectionLanding::Free ? -evidence.cost_foreground : 0.0f;
     };
     appendDistinctHypotheses(hypotheses, uprightHypotheses(cloud, surfaces, up, UprightHypothesisParams(), score),
