@@ -131,3 +131,40 @@ TEST(Preprocessing, AdaptiveTableMarginFollowsTheTableNoise) {
   params.table_margin = 0.004f;  // the configured margin caps it
   EXPECT_FLOAT_EQ(ss::adaptiveTableMargin(noisy, params), 0.004f);
 }
+
+TEST(Preprocessing, PrefersThePlaneObjectsStandOnToALargerWall) {
+  // A single view of a table in front of a wall: the wall holds more points than the table, but
+  // the boxes stand on the table.
+  ss::Scene scene;
+  scene.cloud = std::make_shared<ss::Cloud>();
+  test_clouds::addTable(*scene.cloud, 0.4f, 0.01f);
+  for (float x = -1.0f; x <= 1.0f; x += 0.01f) {
+    for (float z = -0.5f; z <= 0.8f; z += 0.01f) {
+      ss::PointT p;
+      p.x = x;
+      p.y = 0.9f;  // 50 cm behind the table's far edge
+      p.z = z;
+      p.normal_x = p.normal_z = 0.0f;
+      p.normal_y = -1.0f;
+      scene.cloud->push_back(p);
+    }
+  }
+  test_clouds::addBox(*scene.cloud, {-0.2f, -0.1f, 0.0f}, {0.1f, 0.08f, 0.12f}, 0.005f);
+  test_clouds::addBox(*scene.cloud, {0.1f, 0.0f, 0.0f}, {0.08f, 0.08f, 0.2f}, 0.005f);
+  scene.has_normals = true;
+  scene.sensor_origins.push_back({0.0f, -0.8f, 0.7f});
+
+  ss::PreprocessParams params;
+  const auto prepared = ss::preprocess(scene, params);
+  ASSERT_TRUE(prepared.has_table);
+  EXPECT_NEAR(prepared.table_plane[2], 1.0f, 0.01f) << "the table, oriented up";
+  EXPECT_NEAR(prepared.table_plane[3], 0.0f, 0.005f);
+
+  // The test means something only if the wall is the larger plane.
+  std::size_t wall_points = 0, table_points = 0;
+  for (const auto& p : scene.cloud->points) {
+    wall_points += p.y > 0.85f;
+    table_points += std::fabs(p.z) < 1e-4f;
+  }
+  EXPECT_GT(wall_points, 2 * table_points);
+}

@@ -41,8 +41,10 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
 /// the points within ransac_distance (robust sigma), clamped to [5 mm, params.table_margin].
 float adaptiveTableMargin(const std::vector<float>& distances, const PreprocessParams& params);
 
-/// Estimates the dominant plane of `cloud` with RANSAC; returns false if none is found.
-bool estimateSupportingPlane(const Cloud& cloud, const PreprocessParams& params,
+/// Estimates the supporting plane of `cloud` with RANSAC; returns false if none is found. Of up to
+/// three large planes (a single view may show more wall or floor than table), the one with the
+/// most other points standing over it on the `viewpoint` side within 0.3 m.
+bool estimateSupportingPlane(const Cloud& cloud, const PreprocessParams& params, const Eigen::Vector3f& viewpoint,
                              PlaneCoefficients& plane);
 
 /// Expands per-downsampled-point indices to the input points they represent (sorted).

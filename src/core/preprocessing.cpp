@@ -114,7 +114,7 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
       plane = *scene.table_plane;
       found = true;
     } else {
-      found = estimateSupportingPlane(*coarse, params, plane);
+      found = estimateSupportingPlane(*coarse, params, out.viewpoint, plane);
     }
     if (found) {
       out.has_table = true;
