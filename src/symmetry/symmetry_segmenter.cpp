@@ -1,10 +1,13 @@
 #include "symmetry_segmentation/symmetry/symmetry_segmenter.h"
 
+#include <algorithm>
+
 #include "symmetry_segmentation/occupancy.h"
 #include "symmetry_segmentation/parallel_for.h"
 #include "symmetry_segmentation/preprocessing.h"
 #include "symmetry_segmentation/segment_order.h"
 #include "symmetry_segmentation/stopwatch.h"
+#include "symmetry_segmentation/symmetry/nested_segments.h"
 #include "symmetry_segmentation/symmetry/normal_edge_curves.h"
 #include "symmetry_segmentation/symmetry/plane_refinement.h"
 #include "symmetry_segmentation/symmetry/segment_filter.h"
@@ -85,6 +88,17 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
     if (passesFilter(candidate, params_.filter)) passing.push_back(std::move(candidate));
   }
   const std::size_t passed_filter = passing.size();
+  // Take objects the cut glued onto another object's segment back out of it (nested_segments.h).
+  const ReflectionExplained explained = [&graph](int index, const SymmetryPlane& plane) {
+    const ReflectionEvidence evidence = graph.dataTerm(index, plane);
+    return evidence.landing == ReflectionLanding::OnPoint;
+  };
+  for (std::size_t i : removeForeignParts(passing, explained, params_.filter.min_segment_points)) {
+    if (!passing[i].points.empty()) passing[i].scores = graph.scores(passing[i].points, passing[i].plane, params_.filter);
+  }
+  passing.erase(std::remove_if(passing.begin(), passing.end(),
+                               [](const CandidateSegment& c) { return c.points.empty(); }),
+                passing.end());
   const auto kept = removeDuplicates(std::move(passing), params_.filter);
   for (const auto& candidate : kept) {
     Segment segment;

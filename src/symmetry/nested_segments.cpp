@@ -1,0 +1,57 @@
+// Stage 5b: foreign objects taken out of a larger segment (see the header for why).
+#include "symmetry_segmentation/symmetry/nested_segments.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace symmetry_segmentation {
+namespace {
+
+std::vector<int> intersection(const std::vector<int>& a, const std::vector<int>& b) {
+  std::vector<int> common;
+  std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(common));
+  return common;
+}
+
+std::vector<int> difference(const std::vector<int>& a, const std::vector<int>& b) {
+  std::vector<int> rest;
+  std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(rest));
+  return rest;
+}
+
+}  // namespace
+
+std::vector<std::size_t> removeForeignParts(std::vector<CandidateSegment>& segments,
+                                            const ReflectionExplained& explained, int min_points,
+                                            const NestedSegmentParams& params) {
+  std::vector<std::size_t> order(segments.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return segments[a].points.size() > segments[b].points.size(); });
+  // Nested segments as found before any removal, so the result does not depend on which large
+  // segment is visited first.
+  const std::vector<CandidateSegment> original = segments;
+  std::vector<std::size_t> changed;
+  for (std::size_t a : order) {
+    const CandidateSegment& outer = original[a];
+    std::vector<int> remaining = outer.points;
+    for (std::size_t b = 0; b < original.size(); ++b) {
+      const CandidateSegment& inner = original[b];
+      if (b == a || inner.points.empty() || inner.points.size() > params.max_size_ratio * outer.points.size()) continue;
+      const std::vector<int> common = intersection(outer.points, inner.points);
+      if (common.size() < params.min_nested_fraction * inner.points.size()) continue;
+      std::size_t explained_points = 0;
+      for (int i : common) explained_points += explained(i, outer.plane) ? 1 : 0;
+      if (explained_points >= params.max_explained_fraction * common.size()) continue;
+      remaining = difference(remaining, inner.points);
+    }
+    if (remaining.size() == outer.points.size()) continue;
+    if (static_cast<int>(remaining.size()) < min_points) remaining.clear();
+    segments[a].points = std::move(remaining);
+    changed.push_back(a);
+  }
+  std::sort(changed.begin(), changed.end());
+  return changed;
+}
+
+}  // namespace symmetry_segmentation
