@@ -10,6 +10,8 @@
 #include <thread>
 #include <vector>
 
+#include <octomap/OcTree.h>
+
 #include "symmetry_segmentation/occupancy.h"
 #include "symmetry_segmentation/preprocessing.h"
 #include "symmetry_segmentation/stopwatch.h"
@@ -161,6 +163,41 @@ TEST(SymmetricGraphCut, DataTermOfOnePoint) {
   EXPECT_FLOAT_EQ(ss::normalCompatibility(10.0f, params), 1.0f);
   EXPECT_FLOAT_EQ(ss::normalCompatibility(30.0f, params), 0.5f);
   EXPECT_FLOAT_EQ(ss::normalCompatibility(60.0f, params), 0.0f);
+}
+
+TEST(SymmetricGraphCut, MirrorJustOutsideUnobservedSpaceIsTheHiddenSide) {
+  // Observed free space for x < 0.05, nothing observed beyond (the inside of an object whose
+  // hidden face is at x = 0.05). A patch at x = -0.1 faces +x; mirrored about x = c it faces -x,
+  // like the hidden face would.
+  auto tree = std::make_shared<octomap::OcTree>(0.01);
+  for (float x = -0.2f; x < 0.05f; x += 0.005f) {
+    for (float y = -0.1f; y <= 0.1f; y += 0.005f) {
+      for (float z = 0.0f; z <= 0.2f; z += 0.005f) tree->updateNode(octomap::point3d(x, y, z), false);
+    }
+  }
+  const ss::OccupancyMap occupancy(tree);
+  auto cloud = std::make_shared<ss::Cloud>();
+  for (float y = -0.03f; y <= 0.03f; y += 0.01f) {
+    for (float z = 0.07f; z <= 0.13f; z += 0.01f) {
+      ss::PointT p;
+      p.getVector3fMap() = Eigen::Vector3f(-0.1f, y, z);
+      p.getNormalVector3fMap() = Eigen::Vector3f::UnitX();
+      cloud->push_back(p);
+    }
+  }
+  const ss::SymmetricGraphCut cut(cloud, occupancy, std::nullopt, {});
+  int centre = 0;
+  for (int i = 0; i < static_cast<int>(cloud->size()); ++i) {
+    if ((cloud->points[i].getVector3fMap() - Eigen::Vector3f(-0.1f, 0.0f, 0.1f)).norm() < 1e-4f) centre = i;
+  }
+  auto mirrorTo = [](float x) { return planeThrough(Eigen::Vector3f(0.5f * (x - 0.1f), 0.0f, 0.0f), Eigen::Vector3f::UnitX()); };
+  // Landing 4 mm in front of the unobserved region: the hidden face, displaced by noise.
+  ASSERT_EQ(occupancy.classify(Eigen::Vector3f(0.046f, 0.0f, 0.1f)), ss::Occupancy::Free);
+  EXPECT_EQ(cut.dataTerm(centre, mirrorTo(0.046f)).landing, ss::ReflectionLanding::Occluded);
+  // Landing 4 cm in front of it: in free space, evidence against the plane.
+  const ss::ReflectionEvidence far = cut.dataTerm(centre, mirrorTo(0.01f));
+  EXPECT_EQ(far.landing, ss::ReflectionLanding::Free);
+  EXPECT_FLOAT_EQ(far.cost_foreground, 1.0f);
 }
 
 TEST(SymmetricGraphCut, ConcaveLinkIsWeakerThanConvexLinkOfTheSameAngle) {

@@ -105,6 +105,14 @@ ReflectionEvidence ReflectionDataTerm::evaluate(int index, const SymmetryPlane& 
     evidence.landing = ReflectionLanding::Occluded;
     return evidence;
   }
+  // A mirrored surface element just outside unobserved space is the hidden side of an object
+  // (the back face of a box seen from the front), displaced by less than a voxel by noise and
+  // the map's resolution: the rays that carved the free space there passed the object's hidden
+  // edge. One step of dmax into the mirrored surface decides.
+  if (occupancy_.classify(reflected - params_.dmax * reflected_normal) != Occupancy::Free) {
+    evidence.landing = ReflectionLanding::Occluded;
+    return evidence;
+  }
   // Free space: the penalty grows with the distance to the nearest surface point, saturating
   // at dbuf (so nothing farther needs to be searched).
   float nearest = params_.dbuf;
