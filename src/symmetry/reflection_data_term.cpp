@@ -26,7 +26,7 @@ float freeSpaceCost(float distance, const SymmetryCutParams& params) {
 }
 
 ReflectionDataTerm::ReflectionDataTerm(const Cloud& cloud, const PointGrid& grid, const Eigen::AlignedBox3f& cloud_box,
-                                       const OccupancyMap& occupancy,
+                                       const OccupancyGrid& occupancy,
                                        const std::optional<PlaneCoefficients>& table_plane,
                                        const SymmetryCutParams& params)
     : cloud_(cloud), grid_(grid), cloud_box_(cloud_box), occupancy_(occupancy), table_plane_(table_plane),

@@ -61,6 +61,14 @@ SymmetricGraphCut::SymmetricGraphCut(Cloud::ConstPtr cloud, const OccupancyMap& 
   for (const auto& point : cloud_->points) {
     if (isFinitePoint(point)) cloud_box_.extend(point.getVector3fMap());
   }
+  // Reflections that matter land within dbuf of the cloud (farther ones are judged free or
+  // unknown by the map itself); below the table they are decided by the table plane.
+  Eigen::AlignedBox3f reach = cloud_box_;
+  if (!reach.isEmpty()) {
+    const Eigen::Vector3f margin = Eigen::Vector3f::Constant(params_.dbuf + params_.dmax + 0.02f);
+    reach = Eigen::AlignedBox3f(reach.min() - margin, reach.max() + margin);
+  }
+  occupancy_grid_ = std::make_unique<OccupancyGrid>(occupancy_, reach);
   if (cloud_->empty()) return;
   tree_.setInputCloud(cloud_);
   grid_ = PointGrid(*cloud_, params_.dbuf);
@@ -78,7 +86,7 @@ SymmetricGraphCut::SymmetricGraphCut(Cloud::ConstPtr cloud, const OccupancyMap& 
 }
 
 ReflectionDataTerm SymmetricGraphCut::dataTermView() const {
-  return ReflectionDataTerm(*cloud_, grid_, cloud_box_, occupancy_, table_plane_, params_);
+  return ReflectionDataTerm(*cloud_, grid_, cloud_box_, *occupancy_grid_, table_plane_, params_);
 }
 
 ReflectionEvidence SymmetricGraphCut::dataTerm(int index, const SymmetryPlane& plane) const {

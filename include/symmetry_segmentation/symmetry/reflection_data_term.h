@@ -23,7 +23,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include "symmetry_segmentation/occupancy.h"
+#include "symmetry_segmentation/occupancy_grid.h"
 #include "symmetry_segmentation/scene.h"
 #include "symmetry_segmentation/segmentation_result.h"
 #include "symmetry_segmentation/symmetry/point_grid.h"
@@ -60,7 +60,7 @@ float freeSpaceCost(float distance, const SymmetryCutParams& params);
 class ReflectionDataTerm {
  public:
   ReflectionDataTerm(const Cloud& cloud, const PointGrid& grid, const Eigen::AlignedBox3f& cloud_box,
-                     const OccupancyMap& occupancy, const std::optional<PlaneCoefficients>& table_plane,
+                     const OccupancyGrid& occupancy, const std::optional<PlaneCoefficients>& table_plane,
                      const SymmetryCutParams& params);
 
   ReflectionEvidence evaluate(int index, const SymmetryPlane& plane) const;
@@ -72,7 +72,7 @@ class ReflectionDataTerm {
   const Cloud& cloud_;
   const PointGrid& grid_;
   const Eigen::AlignedBox3f& cloud_box_;
-  const OccupancyMap& occupancy_;
+  const OccupancyGrid& occupancy_;
   const std::optional<PlaneCoefficients>& table_plane_;
   const SymmetryCutParams& params_;
 };

@@ -13,6 +13,7 @@
 #include <pcl/kdtree/kdtree_flann.h>
 
 #include "symmetry_segmentation/occupancy.h"
+#include "symmetry_segmentation/occupancy_grid.h"
 #include "symmetry_segmentation/scene.h"
 #include "symmetry_segmentation/segmentation_result.h"
 #include "symmetry_segmentation/symmetry/point_grid.h"
@@ -47,6 +48,7 @@ class SymmetricGraphCut {
  private:
   Cloud::ConstPtr cloud_;
   const OccupancyMap& occupancy_;
+  std::unique_ptr<OccupancyGrid> occupancy_grid_;  ///< occupancy_ around the cloud, for the data term.
   std::optional<PlaneCoefficients> table_plane_;
   SymmetryCutParams params_;
   pcl::KdTreeFLANN<PointT> tree_;
