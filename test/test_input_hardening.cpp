@@ -269,12 +269,17 @@ TEST(InputHardening, SceneInfoIsValidated) {
       {"sensor_origins: [[1, 2, .nan]]\n", "finite"},
       {"sensor_origins: [[1, 2, [3]]]\n", "3 numbers"},
       {"kind: [a, b]\n", "'kind'"},
+      {"kind: overall\n", "reserved for the total"},
+      {"kind: \"two words\"\n", "single word"},
+      {"kind: \"\"\n", "single word"},
   };
   const std::string info = dir + "/scene/scene_info.yaml";
   for (const auto& [content, problem] : cases) {
     writeTextFile(info, content);
     expectInputError([&] { ss::loadScene(dir + "/scene"); }, info, problem);
   }
+  writeTextFile(info, "kind: my_scenes-2\n");
+  EXPECT_EQ(ss::loadScene(dir + "/scene").kind, "my_scenes-2");
 }
 
 // ---- segments.json -----------------------------------------------------------------------------

@@ -1,6 +1,9 @@
 // Scene directories: which files make a scene, and writing one back out.
 #include "symmetry_segmentation/scene_io.h"
 
+#include <algorithm>
+#include <cctype>
+
 #include <fstream>
 #include <iomanip>
 
@@ -40,6 +43,13 @@ void loadSceneInfo(const std::string& path, Scene& scene) {
     if (info["kind"]) {
       if (!info["kind"].IsScalar()) throw InputError(path, "'kind' must be a single word");
       scene.kind = info["kind"].as<std::string>();
+      const bool word = !scene.kind.empty() && std::all_of(scene.kind.begin(), scene.kind.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+      });
+      if (!word) throw InputError(path, "'kind' must be a single word (letters, digits, '_', '-')");
+      // The evaluator's total row is called "overall"; a scene kind of that name would merge
+      // into it. ("unknown" is what scenes without a kind are grouped as, so it may be given.)
+      if (scene.kind == "overall") throw InputError(path, "'kind' must not be 'overall' (reserved for the total)");
     }
     if (info["sensor_origins"]) {
       const YAML::Node list = info["sensor_origins"];
