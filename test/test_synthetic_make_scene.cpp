@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include <algorithm>
 
 #include <boost/filesystem.hpp>
@@ -48,6 +50,9 @@ TEST(MakeSceneTool, BadArgumentsExitWithCodeTwo) {
   expectUsageError("--kind clutter --seed -3 --output " + dir, "--seed");
   expectUsageError("--kind clutter --seed 99999999999 --output " + dir, "--seed");
   expectUsageError("--kind clutter --seed 1 --views 0 --output " + dir, "--views");
+  expectUsageError("--kind clutter --seed 1 --fusion-voxel 0 --output " + dir, "--fusion-voxel");
+  expectUsageError("--kind clutter --seed 1 --fusion-voxel 3mm --output " + dir, "--fusion-voxel");
+  expectUsageError("--kind clutter --seed 1 --image-scale 7 --output " + dir, "--image-scale");
   expectUsageError("--kind clutter --seed 1 --output", "--output needs a value");
   expectUsageError("--kind clutter --seed 1 --colour red --output " + dir, "unknown argument '--colour'");
   EXPECT_TRUE(boost::filesystem::is_empty(dir)) << "nothing is written on bad arguments";
@@ -78,4 +83,18 @@ TEST(MakeSceneTool, WritesTheSameFilesForTheSameSeed) {
   EXPECT_TRUE(scene.occupancy);
   ASSERT_TRUE(scene.table_plane);
   EXPECT_NEAR((*scene.table_plane)[2], 1.0f, 1e-6f);
+}
+
+// The scaling benchmark's knobs: a coarser fusion voxel gives fewer points, a finer one with a
+// sharper camera more, over the same objects.
+TEST(MakeSceneTool, FusionVoxelAndImageScaleSetTheDensity) {
+  const std::string dir = test_support::makeTempDir("make_scene_density");
+  ASSERT_EQ(runCommand(makeScene("--kind isolated --seed 2 --views 1 --fusion-voxel 0.008 --output " + dir + "/coarse")).exit_code, 0);
+  ASSERT_EQ(runCommand(makeScene("--kind isolated --seed 2 --views 1 --fusion-voxel 0.0015 --image-scale 2 --output " + dir + "/fine")).exit_code, 0);
+  const ss::Scene coarse = ss::loadScene(dir + "/coarse");
+  const ss::Scene fine = ss::loadScene(dir + "/fine");
+  EXPECT_GT(fine.size(), 8 * coarse.size());
+  std::set<int> coarse_labels(coarse.labels.begin(), coarse.labels.end());
+  std::set<int> fine_labels(fine.labels.begin(), fine.labels.end());
+  EXPECT_EQ(coarse_labels, fine_labels) << "same objects";
 }

@@ -1,8 +1,9 @@
 // make_scene: writes a deterministic synthetic tabletop scene with ground truth.
-//   make_scene --kind <kind> --seed N --output DIR [--views N]
+//   make_scene --kind <kind> --seed N --output DIR [--views N] [--fusion-voxel M] [--image-scale K]
 // Exit codes: 0 written, 1 generation or writing failed, 2 bad arguments.
 
 #include <cerrno>
+#include <cmath>
 #include <chrono>
 #include <cstdint>
 #include <cstdlib>
@@ -24,20 +25,36 @@ constexpr int kExitFailure = 1;
 constexpr int kExitUsage = 2;
 
 const char* const kUsage =
-    "usage: make_scene --kind <kind> --seed N --output DIR [--views N]\n"
+    "usage: make_scene --kind <kind> --seed N --output DIR [--views N] [--fusion-voxel M]\n"
+    "                  [--image-scale K]\n"
     "       make_scene --list-kinds | --help\n"
     "Writes a synthetic tabletop scene (cloud.ply, occupancy.bt, table_plane.txt, labels.txt,\n"
     "scene_info.yaml) seen by a virtual depth camera from N poses (default 4) on a 60 degree arc.\n"
-    "The same kind and seed always give identical files.\n";
+    "The same kind and seed always give identical files.\n"
+    "  --fusion-voxel M   voxel size (m) the views are fused with, 0.0005..0.05 (default 0.003);\n"
+    "                     smaller gives more points\n"
+    "  --image-scale K    camera resolution 640K x 480K, K in 1..6 (default 1), same field of view\n";
 
 struct Arguments {
   std::string kind;
   std::optional<uint32_t> seed;
   std::string output;
   int views = 4;
+  double fusion_voxel = 0.003;
+  int image_scale = 1;
   bool help = false;
   bool list_kinds = false;
 };
+
+/// Whole-string finite decimal number.
+std::optional<double> parseNumber(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  char* end = nullptr;
+  errno = 0;
+  const double value = std::strtod(text.c_str(), &end);
+  if (errno != 0 || end != text.c_str() + text.size() || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
 
 /// Whole-string unsigned decimal in [0, max]; no sign, no trailing characters.
 std::optional<unsigned long long> parseUnsigned(const std::string& text, unsigned long long max) {
@@ -64,7 +81,8 @@ Arguments parseArguments(int argc, char** argv) {
       args.list_kinds = true;
       continue;
     }
-    if (flag != "--kind" && flag != "--seed" && flag != "--output" && flag != "--views") {
+    if (flag != "--kind" && flag != "--seed" && flag != "--output" && flag != "--views" && flag != "--fusion-voxel" &&
+        flag != "--image-scale") {
       throw InputError("unknown argument '" + flag + "'");
     }
     if (!seen.insert(flag).second) throw InputError(flag + " given twice");
@@ -79,6 +97,16 @@ Arguments parseArguments(int argc, char** argv) {
       const auto seed = parseUnsigned(value, UINT32_MAX);
       if (!seed) throw InputError("--seed must be an integer in 0..4294967295, got '" + value + "'");
       args.seed = static_cast<uint32_t>(*seed);
+    } else if (flag == "--fusion-voxel") {
+      const auto voxel = parseNumber(value);
+      if (!voxel || *voxel < 0.0005 || *voxel > 0.05) {
+        throw InputError("--fusion-voxel must be a number in 0.0005..0.05, got '" + value + "'");
+      }
+      args.fusion_voxel = *voxel;
+    } else if (flag == "--image-scale") {
+      const auto scale = parseUnsigned(value, 6);
+      if (!scale || *scale < 1) throw InputError("--image-scale must be an integer in 1..6, got '" + value + "'");
+      args.image_scale = static_cast<int>(*scale);
     } else {
       const auto views = parseUnsigned(value, 16);
       if (!views || *views < 1) throw InputError("--views must be an integer in 1..16, got '" + value + "'");
@@ -109,6 +137,15 @@ int main(int argc, char** argv) {
     options.kind = synthetic::parseSceneKind(args.kind);
     options.seed = *args.seed;
     options.num_views = args.views;
+    options.voxel_size = args.fusion_voxel;
+    // Same field of view at K times the resolution.
+    const int k = args.image_scale;
+    options.intrinsics.width *= k;
+    options.intrinsics.height *= k;
+    options.intrinsics.fx *= k;
+    options.intrinsics.fy *= k;
+    options.intrinsics.cx = 0.5 * (options.intrinsics.width - 1);
+    options.intrinsics.cy = 0.5 * (options.intrinsics.height - 1);
     synthetic::validate(options);
   } catch (const std::exception& e) {
     std::cerr << "make_scene: " << e.what() << " (try --help)\n";
