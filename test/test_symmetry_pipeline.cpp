@@ -61,9 +61,14 @@ TEST(SymmetryMethod, SameSegmentsWithOneOrTwoThreadsAndPlanesOnEachSegment) {
     for (int i : segment.indices) on_table += scene.labels[i] == 0;
     EXPECT_LT(on_table, segment.indices.size() / 10);
   }
-  std::size_t hypotheses = 0;
+  std::size_t hypotheses = 0, graph_cuts = 0, before_filtering = 0;
   for (const auto& [name, count] : a.counts) {
     if (name == "hypotheses") hypotheses = count;
+    if (name == "graph_cuts") graph_cuts = count;
+    if (name == "segments_before_filtering") before_filtering = count;
   }
   EXPECT_GT(hypotheses, 0u);
+  // One cut per hypothesis, and one more per segment large enough to be refined.
+  EXPECT_GT(graph_cuts, hypotheses);
+  EXPECT_LE(graph_cuts, 2 * hypotheses);
 }

@@ -72,11 +72,15 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
   });
   result.timing_ms.emplace_back("graph_cut", stage.lap());
 
+  std::vector<char> cut_again(candidates.size(), 0);  // per index: no shared counter between threads
   parallelFor(candidates.size(), params_.threads, [&](std::size_t i) {
     CandidateSegment& candidate = candidates[i];
     if (static_cast<int>(candidate.points.size()) < params_.filter.min_segment_points) return;
     candidate.plane = refinePlane(cloud, candidate.points, candidate.plane, params_.refinement, params_.detection);
-    if (params_.refinement.enabled) candidate.points = graph.segment(candidate.plane);
+    if (params_.refinement.enabled) {
+      candidate.points = graph.segment(candidate.plane);
+      cut_again[i] = 1;
+    }
     candidate.scores = graph.scores(candidate.points, candidate.plane, params_.filter);
   });
   result.timing_ms.emplace_back("refinement", stage.lap());
@@ -114,6 +118,7 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
   result.counts = {{"working_points", cloud.size()},
                    {"curves", curves.size()},
                    {"hypotheses", hypotheses.size()},
+                   {"graph_cuts", hypotheses.size() + std::count(cut_again.begin(), cut_again.end(), 1)},
                    {"segments_before_filtering", non_empty},
                    {"segments_after_filtering", passed_filter},
                    {"segments_after_deduplication", result.segments.size()}};
