@@ -71,4 +71,5 @@ TEST(SymmetryMethod, SameSegmentsWithOneOrTwoThreadsAndPlanesOnEachSegment) {
   // One cut per hypothesis, and one more per segment large enough to be refined.
   EXPECT_GT(graph_cuts, hypotheses);
   EXPECT_LE(graph_cuts, 2 * hypotheses);
+  EXPECT_GE(graph_cuts, hypotheses + before_filtering) << "every non-empty segment was refined";
 }
