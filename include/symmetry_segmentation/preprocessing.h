@@ -4,6 +4,7 @@
 // points, and normals (a file's own normals are kept as given, averaged per voxel; missing
 // ones are estimated and oriented toward the sensor).
 
+#include <optional>
 #include <vector>
 
 #include "symmetry_segmentation/scene.h"
@@ -43,9 +44,10 @@ float adaptiveTableMargin(const std::vector<float>& distances, const PreprocessP
 
 /// Estimates the supporting plane of `cloud` with RANSAC; returns false if none is found. Of up to
 /// three large planes (a single view may show more wall or floor than table), the one with the
-/// most other points standing over it on the `viewpoint` side within 0.3 m.
-bool estimateSupportingPlane(const Cloud& cloud, const PreprocessParams& params, const Eigen::Vector3f& viewpoint,
-                             PlaneCoefficients& plane);
+/// most other points standing over it within 0.3 m, on the `viewpoint` side (without one: on
+/// the side most points are on).
+bool estimateSupportingPlane(const Cloud& cloud, const PreprocessParams& params,
+                             const std::optional<Eigen::Vector3f>& viewpoint, PlaneCoefficients& plane);
 
 /// Expands per-downsampled-point indices to the input points they represent (sorted).
 std::vector<int> expandToInput(const PreprocessedScene& scene, const std::vector<int>& voxel_indices);

@@ -114,7 +114,10 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
       plane = *scene.table_plane;
       found = true;
     } else {
-      found = estimateSupportingPlane(*coarse, params, out.viewpoint, plane);
+      // The sensor is known from the scene's origins or the cloud's own viewpoint (a PCD's VIEWPOINT).
+      std::optional<Eigen::Vector3f> sensor;
+      if (!scene.sensor_origins.empty()) sensor = out.viewpoint;
+      found = estimateSupportingPlane(*coarse, params, sensor, plane);
     }
     if (found) {
       out.has_table = true;

@@ -15,6 +15,8 @@
 
 #include "symmetry_segmentation/preprocessing.h"
 
+#include <optional>
+
 namespace symmetry_segmentation {
 namespace {
 
@@ -61,15 +63,21 @@ bool largestPlane(const Cloud::Ptr& cloud, const PreprocessParams& params, std::
 /// Points resting on the plane: on no candidate plane, on the sensor's side within an object's
 /// height, and over the plane's own points. (The sensor sees the table from above.)
 std::size_t pointsStandingOn(const CandidatePlane& candidate, const std::vector<CandidatePlane>& all,
-                             const Cloud& cloud, const Eigen::Vector3f& viewpoint, float on_plane_distance) {
+                             const Cloud& cloud, const std::optional<Eigen::Vector3f>& viewpoint,
+                             float on_plane_distance) {
   std::vector<const PointT*> off_planes;
+  float majority = 0.0f;
   for (const auto& p : cloud.points) {
     bool on_any = false;
     for (const auto& other : all) on_any = on_any || std::fabs(distanceTo(other.plane, p)) <= on_plane_distance;
-    if (!on_any) off_planes.push_back(&p);
+    if (on_any) continue;
+    off_planes.push_back(&p);
+    majority += distanceTo(candidate.plane, p) > 0.0f ? 1.0f : -1.0f;
   }
-  const bool sensor_above = candidate.plane.head<3>().dot(viewpoint) + candidate.plane[3] >= 0.0f;
-  const PlaneCoefficients up = sensor_above ? candidate.plane : PlaneCoefficients(-candidate.plane);
+  // Up is the sensor's side, or without a known sensor the side most other points are on (as
+  // preprocessing orients the plane it keeps).
+  const float side = viewpoint ? candidate.plane.head<3>().dot(*viewpoint) + candidate.plane[3] : majority;
+  const PlaneCoefficients up = side >= 0.0f ? candidate.plane : PlaneCoefficients(-candidate.plane);
   pcl::KdTreeFLANN<PointT> footprint;
   footprint.setInputCloud(candidate.inliers);
   std::vector<int> index(1);
@@ -89,8 +97,8 @@ std::size_t pointsStandingOn(const CandidatePlane& candidate, const std::vector<
 
 }  // namespace
 
-bool estimateSupportingPlane(const Cloud& cloud, const PreprocessParams& params, const Eigen::Vector3f& viewpoint,
-                             PlaneCoefficients& plane) {
+bool estimateSupportingPlane(const Cloud& cloud, const PreprocessParams& params,
+                             const std::optional<Eigen::Vector3f>& viewpoint, PlaneCoefficients& plane) {
   if (cloud.size() < 3) return false;
   // A "table" holding under a tenth of the scene is more likely an object face.
   const std::size_t min_inliers = std::max<std::size_t>(50, cloud.size() / 10);

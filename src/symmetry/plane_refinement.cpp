@@ -36,13 +36,16 @@ struct Match {
   float squared_distance = std::numeric_limits<float>::max();
 };
 
-/// Index and squared distance of the grid point nearest to `query` within `radius`, or -1.
-int nearestWithin(const PointGrid& grid, const Eigen::Vector3f& query, float radius, float& squared_distance) {
+/// Index and squared distance of the grid point nearest to `query` within `radius` whose normal
+/// is compatible with `normal`, or -1. (On a thin wall the nearest voxel is often the other
+/// side's, facing the opposite way.)
+int nearestCompatible(const PointGrid& grid, const Cloud& points, const Eigen::Vector3f& query,
+                      const Eigen::Vector3f& normal, float radius, float& squared_distance) {
   int nearest = -1;
   squared_distance = std::numeric_limits<float>::max();
   for (const float r : {std::min(kNearRadius, radius), radius}) {
     grid.forEachWithin(query, r, [&](int index, float squared) {
-      if (squared < squared_distance) {
+      if (squared < squared_distance && normal.dot(points.points[index].getNormalVector3fMap()) >= kMinNormalCos) {
         squared_distance = squared;
         nearest = index;
       }
@@ -83,11 +86,10 @@ SymmetryPlane refinePlane(const Cloud& cloud, const std::vector<int>& segment, c
       target_of[i] = -1;
       const PointT& p = points->points[i];
       float squared = 0.0f;
-      const int target = nearestWithin(grid, reflectPoint(current, p.getVector3fMap()),
-                                       refinement.icp_max_correspondence, squared);
+      const int target = nearestCompatible(grid, *points, reflectPoint(current, p.getVector3fMap()),
+                                           reflectDirection(current, p.getNormalVector3fMap()),
+                                           refinement.icp_max_correspondence, squared);
       if (target < 0 || squared > max_squared) continue;
-      const Eigen::Vector3f mirrored_normal = reflectDirection(current, p.getNormalVector3fMap());
-      if (mirrored_normal.dot(points->points[target].getNormalVector3fMap()) < kMinNormalCos) continue;
       Match& match = best_for_target[target];
       if (squared < match.squared_distance) match = {i, squared};
     }

@@ -76,8 +76,11 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
   parallelFor(candidates.size(), params_.threads, [&](std::size_t i) {
     CandidateSegment& candidate = candidates[i];
     if (static_cast<int>(candidate.points.size()) < params_.filter.min_segment_points) return;
+    const SymmetryPlane before = candidate.plane;
     candidate.plane = refinePlane(cloud, candidate.points, candidate.plane, params_.refinement, params_.detection);
-    if (params_.refinement.enabled) {
+    // The same plane would give the same cut.
+    const bool moved = candidate.plane.normal != before.normal || candidate.plane.distance != before.distance;
+    if (params_.refinement.enabled && moved) {
       candidate.points = graph.segment(candidate.plane);
       cut_again[i] = 1;
     }
@@ -97,6 +100,9 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
     const ReflectionEvidence evidence = graph.dataTerm(index, plane);
     return evidence.landing == ReflectionLanding::OnPoint;
   };
+  // What is left keeps its place even if its recomputed scores would now fail the filter:
+  // taking the glued object out cuts the smooth links it shared with it, which is no fault of
+  // the remaining object.
   for (std::size_t i : removeForeignParts(passing, explained, params_.filter.min_segment_points)) {
     if (!passing[i].points.empty()) passing[i].scores = graph.scores(passing[i].points, passing[i].plane, params_.filter);
   }

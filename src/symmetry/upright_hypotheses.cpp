@@ -17,6 +17,7 @@ namespace {
 constexpr float kDegToRad = static_cast<float>(M_PI) / 180.0f;
 constexpr int kAxisPlaneAngles = 24;     // Planes through an axis tried every 7.5 degrees.
 constexpr float kLandingRadius = 0.01f;  // A reflection this close to the surface lands on it (m).
+constexpr float kColumnMargin = 0.02f;   // Height margin of the scored column around an axis (m).
 
 struct Surface {
   std::vector<int> points;
@@ -78,7 +79,7 @@ bool fitVerticalAxis(const Cloud& cloud, const std::vector<int>& points, const E
     squared_residual += std::pow(up.cross(d).dot(offset), 2);
     radius += (offset - offset.dot(up) * up).norm();
   }
-  // The axis lies behind the surface (normals point away from it), within an object's size.
+  // The axis must lie within an object's size of the surface.
   radius /= used;
   axis_radius = static_cast<float>(radius);
   return std::sqrt(squared_residual / used) < params.max_axis_residual && radius < params.max_axis_radius;
@@ -88,12 +89,24 @@ bool fitVerticalAxis(const Cloud& cloud, const std::vector<int>& points, const E
 /// surface belongs to, as far as it was seen) are best explained by their reflections. A surface
 /// is often only a strip of its object, so the strip alone would pick its own bisector.
 SymmetryHypothesis bestPlaneThroughAxis(const Cloud& cloud, const ReflectionScore& score,
-                                        const Eigen::Vector3f& axis_point, float axis_radius, const Eigen::Vector3f& up,
-                                        int support) {
+                                        const std::vector<int>& surface, const Eigen::Vector3f& axis_point,
+                                        float axis_radius, const Eigen::Vector3f& up, int support) {
+  // The column around the axis, over the surface's own height (what stands on or under the
+  // object is not its business).
+  float low = std::numeric_limits<float>::max(), high = -std::numeric_limits<float>::max();
+  for (int i : surface) {
+    const float height = up.dot(cloud.points[i].getVector3fMap());
+    low = std::min(low, height);
+    high = std::max(high, height);
+  }
+  low -= kColumnMargin;
+  high += kColumnMargin;
   const float reach = 1.2f * axis_radius + kLandingRadius;
   std::vector<int> around;
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     Eigen::Vector3f offset = cloud.points[i].getVector3fMap() - axis_point;
+    const float height = offset.dot(up) + up.dot(axis_point);
+    if (height < low || height > high) continue;
     offset -= offset.dot(up) * up;
     if (offset.squaredNorm() < reach * reach) around.push_back(static_cast<int>(i));
   }
@@ -115,9 +128,13 @@ SymmetryHypothesis bestPlaneThroughAxis(const Cloud& cloud, const ReflectionScor
 }  // namespace
 
 ReflectionScore landingScore(const Cloud& cloud) {
+  // The closure owns what it needs: it may outlive the caller's cloud.
+  auto positions = std::make_shared<std::vector<Eigen::Vector3f>>();
+  positions->reserve(cloud.size());
+  for (const auto& p : cloud.points) positions->push_back(p.getVector3fMap());
   auto grid = std::make_shared<const PointGrid>(cloud, kLandingRadius);
-  return [&cloud, grid](int index, const SymmetryPlane& plane) {
-    const Eigen::Vector3f reflected = reflectPoint(plane, cloud.points[index].getVector3fMap());
+  return [positions, grid](int index, const SymmetryPlane& plane) {
+    const Eigen::Vector3f reflected = reflectPoint(plane, (*positions)[index]);
     bool hit = false;
     grid->forEachWithin(reflected, kLandingRadius, [&](int, float) { hit = true; });
     return hit ? 1.0f : 0.0f;
@@ -179,7 +196,7 @@ std::vector<SymmetryHypothesis> uprightHypotheses(const Cloud& cloud, const std:
     if (!fitVerticalAxis(cloud, surface.points, up, params, axis_point, axis_radius)) continue;
     // Any vertical plane through the axis is a symmetry plane of a surface of revolution; the
     // one that maps most of the seen part of the surface onto itself bisects what was seen.
-    result.push_back(bestPlaneThroughAxis(cloud, score, axis_point, axis_radius, up, n));
+    result.push_back(bestPlaneThroughAxis(cloud, score, surface.points, axis_point, axis_radius, up, n));
   }
   return result;
 }

@@ -14,7 +14,9 @@
 //   * else, p' more than dbuf below the table plane: an object's mirror image is the object, which
 //     stands above the table, so this is background: cost(FG) = 1, cost(BG) = 0.
 //   * else, p' up to dbuf below the table, on the hidden side of a surface (skipped candidate),
-//     or in unknown / occupied space ("occluded"): no evidence either way,
+//     in unknown / occupied space, or in free space within dmax of unknown / occupied space
+//     behind the mirrored surface (p' - dmax n' not free: the hidden back face of the object,
+//     displaced by noise and the voxel grid) ("occluded"): no evidence either way,
 //     cost(FG) = cost(BG) = 0; smoothness decides.
 //   * else (observed free space): cost(FG) = clamp((r - dmax) / (dbuf - dmax), 0, 1), cost(BG) = 0.
 

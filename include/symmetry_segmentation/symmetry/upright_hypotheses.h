@@ -3,8 +3,9 @@
 // tabletop: objects stand on the table, so most of their symmetry planes are vertical. The curve
 // matching of stage 2 needs a pair of normal edges; a bottle or a can offers almost none (its
 // rim and a gentle shoulder), so it is proposed from its surfaces instead:
-//  - a curved surface whose normals meet a common vertical axis (surface of revolution): the
-//    vertical plane through that axis and the surface's centre;
+//  - a curved surface whose normals meet a common vertical axis (surface of revolution): a
+//    vertical plane through that axis, the orientation (of 24) that the score callback rates
+//    best over the column around the axis;
 //  - a vertical flat face: the vertical plane bisecting it;
 //  - a horizontal flat face: the vertical planes along its two principal axes.
 // These are hypotheses only; the graph cut, refinement and filter judge them as any other.
@@ -26,7 +27,9 @@ struct UprightHypothesisParams {
   float face_tilt_deg = 20.0f;         ///< Faces within this of vertical / horizontal propose planes.
   float max_axis_residual = 0.01f;     ///< RMS distance of normal lines from the fitted axis (m).
   float max_axis_radius = 0.25f;       ///< Farther axes are not an object's (m).
-  float min_normal_spread_deg = 20.0f; ///< Normals must turn this much around the axis to locate it.
+  float min_normal_spread_deg = 20.0f; ///< Normals must turn around the axis to locate it: the mean of
+                                       ///< the unit normals is shorter than cos(this / 2) (an evenly
+                                       ///< sampled arc needs about 35 degrees for the default).
 };
 
 /// How well point `index` is explained by its reflection about `plane`: positive when it lands on
