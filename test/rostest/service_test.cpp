@@ -171,5 +171,6 @@ TEST(SegmentService, SuccessWithLatestCloudAndCachedMap) {
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
   ros::init(argc, argv, "segmentation_service_test");
+  ros::NodeHandle keep_node_alive;  // the node shuts down when its last handle goes
   return RUN_ALL_TESTS();
 }
