@@ -25,11 +25,12 @@ Scene assembleScene(const sensor_msgs::PointCloud2& cloud, const SceneInputs& in
                        inputs.region_of_interest ? "no finite point inside the region of interest"
                                                  : "cloud has no finite point");
   }
+  // The sensor origin is passed on even with a map: the core orients normals and the table
+  // plane toward it (without one it votes, which a large table patch can get wrong).
+  if (inputs.sensor_origin) scene.sensor_origins.push_back(*inputs.sensor_origin);
   if (inputs.occupancy) {
     scene.occupancy = inputs.occupancy;
-  } else if (inputs.sensor_origin) {
-    scene.sensor_origins.push_back(*inputs.sensor_origin);
-  } else {
+  } else if (!inputs.sensor_origin) {
     throw RequestError(Response::NO_OCCUPANCY,
                        "no OctoMap received, and no sensor frame or cloud viewpoint to ray-cast one from");
   }

@@ -187,7 +187,7 @@ SegmentationNodelet::Outcome SegmentationNodelet::process(const sensor_msgs::Poi
       std::lock_guard<std::mutex> lock(inputs_mutex_);
       if (map_.tree && map_.frame == frame) inputs.occupancy = map_.tree;
     }
-    if (!inputs.occupancy) {
+    {
       if (!sensor_frame_.empty()) {
         std::string error;
         if (!tf_buffer_->canTransform(frame, sensor_frame_, stamp, timeout, &error)) {

@@ -141,6 +141,12 @@ TEST(SceneAssembly, StatusPerFailureCause) {
   EXPECT_EQ(statusOf(xyzMessage({{0, 0, 1}}), inputs), Response::NO_OCCUPANCY);
   inputs.occupancy = std::make_shared<octomap::OcTree>(0.01);
   EXPECT_EQ(statusOf(xyzMessage({{0, 0, 1}}), inputs), Response::SUCCESS);
+  // With a map, a known origin is still passed on (the core orients normals toward it).
+  inputs.sensor_origin = Eigen::Vector3f(0, -1, 1);
+  const ss::Scene scene = ss::assembleScene(xyzMessage({{0, 0, 1}}), inputs);
+  EXPECT_TRUE(scene.occupancy);
+  ASSERT_EQ(scene.sensor_origins.size(), 1u);
+  EXPECT_FLOAT_EQ(scene.sensor_origins[0].y(), -1.0f);
 }
 
 TEST(SceneAssembly, TransformsIntoProcessingFrameAndUsesOrigin) {

@@ -33,7 +33,8 @@ struct AxisAlignedBox {
 struct SceneInputs {
   Eigen::Isometry3d cloud_to_processing = Eigen::Isometry3d::Identity();
   std::shared_ptr<octomap::OcTree> occupancy;    ///< In the processing frame; null when none.
-  std::optional<Eigen::Vector3f> sensor_origin;  ///< In the processing frame; used without a map.
+  std::optional<Eigen::Vector3f> sensor_origin;  ///< In the processing frame: ray-cast origin without a map,
+                                                 ///< normal / table orientation always.
   std::optional<AxisAlignedBox> region_of_interest;  ///< In the processing frame.
 };
 
