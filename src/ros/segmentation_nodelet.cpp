@@ -1,6 +1,8 @@
 #include "symmetry_segmentation/ros/segmentation_nodelet.h"
 
 #include <chrono>
+#include <iomanip>
+#include <sstream>
 
 #include <pcl/console/print.h>
 #include <pluginlib/class_list_macros.hpp>
@@ -33,11 +35,13 @@ SegmentationNodelet::~SegmentationNodelet() {
 
 void SegmentationNodelet::loadParameters() {
   ros::NodeHandle& pnh = getPrivateNodeHandle();
-  pnh.param<std::string>("mode", mode_, "continuous");
-  if (mode_ != "continuous" && mode_ != "on_demand") {
-    NODELET_ERROR("~mode '%s' is neither 'continuous' nor 'on_demand'; using 'continuous'", mode_.c_str());
-    mode_ = "continuous";
+  std::string mode;
+  pnh.param<std::string>("mode", mode, "continuous");
+  if (mode != "continuous" && mode != "on_demand") {
+    NODELET_ERROR("~mode '%s' is neither 'continuous' nor 'on_demand'; using 'continuous'", mode.c_str());
+    mode = "continuous";
   }
+  continuous_ = mode == "continuous";
   pnh.param<std::string>("method", method_, defaultMethod());
   pnh.param<std::string>("fixed_frame", fixed_frame_, "");
   pnh.param<std::string>("sensor_frame", sensor_frame_, "");
@@ -85,9 +89,61 @@ void SegmentationNodelet::onInit() {
   service_ = mt_pnh.advertiseService("segment", &SegmentationNodelet::segmentService, this);
   cloud_subscriber_ = pnh.subscribe("input", 1, &SegmentationNodelet::cloudCallback, this);
   octomap_subscriber_ = pnh.subscribe("octomap", 1, &SegmentationNodelet::octomapCallback, this);
-  if (continuous()) worker_ = std::thread(&SegmentationNodelet::workerLoop, this);
+  worker_ = std::thread(&SegmentationNodelet::workerLoop, this);  // idles in on_demand mode
+
+  // Live tuning. The server starts from the values loaded above (config file, ~mode), not
+  // from the .cfg defaults: updateConfig before setCallback.
+  reconfigure_server_ = std::make_unique<dynamic_reconfigure::Server<symmetry_segmentation::LiveParametersConfig>>(
+      reconfigure_mutex_, getMTPrivateNodeHandle());
+  symmetry_segmentation::LiveParametersConfig live;
+  {
+    std::lock_guard<std::mutex> lock(config_mutex_);
+    live.mode = continuous() ? "continuous" : "on_demand";
+    live.voxel_size = config_.preprocessing.voxel_size;
+    live.s_occl = config_.symmetry.filter.s_occl;
+    live.s_smooth = config_.symmetry.filter.s_smooth;
+    live.lambda_smooth = config_.symmetry.cut.lambda_smooth;
+    live.lambda_sym = config_.symmetry.cut.lambda_sym;
+  }
+  reconfigure_server_->updateConfig(live);
+  reconfigure_server_->setCallback(boost::bind(&SegmentationNodelet::reconfigure, this, boost::placeholders::_1,
+                                               boost::placeholders::_2));
   NODELET_INFO("symmetry segmentation ready: mode %s, method %s, fixed frame '%s', sensor frame '%s'",
-               mode_.c_str(), method_.c_str(), fixed_frame_.c_str(), sensor_frame_.c_str());
+               continuous() ? "continuous" : "on_demand", method_.c_str(), fixed_frame_.c_str(),
+               sensor_frame_.c_str());
+}
+
+void SegmentationNodelet::reconfigure(symmetry_segmentation::LiveParametersConfig& live, uint32_t) {
+  SegmentationConfig config;
+  {
+    std::lock_guard<std::mutex> lock(config_mutex_);
+    config = config_;
+  }
+  const std::pair<const char*, double> values[] = {{"preprocessing.voxel_size", live.voxel_size},
+                                                   {"symmetry.filter.s_occl", live.s_occl},
+                                                   {"symmetry.filter.s_smooth", live.s_smooth},
+                                                   {"symmetry.cut.lambda_smooth", live.lambda_smooth},
+                                                   {"symmetry.cut.lambda_sym", live.lambda_sym}};
+  for (const auto& [key, value] : values) {
+    try {
+      std::ostringstream text;
+      text << std::setprecision(17) << value;
+      setConfigValue(config, key, text.str());
+    } catch (const std::exception& error) {
+      NODELET_ERROR("reconfigure: ignoring %s = %g: %s", key, value, error.what());
+    }
+  }
+  {
+    std::lock_guard<std::mutex> lock(config_mutex_);
+    config_ = config;
+  }
+  if (live.mode != "continuous" && live.mode != "on_demand") {
+    NODELET_ERROR("reconfigure: mode '%s' is neither 'continuous' nor 'on_demand'; unchanged", live.mode.c_str());
+    live.mode = continuous() ? "continuous" : "on_demand";
+  }
+  continuous_ = live.mode == "continuous";
+  NODELET_INFO("reconfigured: mode %s, voxel_size %g, s_occl %g, s_smooth %g, lambda_smooth %g, lambda_sym %g",
+               live.mode.c_str(), live.voxel_size, live.s_occl, live.s_smooth, live.lambda_smooth, live.lambda_sym);
 }
 
 bool SegmentationNodelet::hasOutputSubscribers() const {
@@ -157,7 +213,7 @@ void SegmentationNodelet::workerLoop() {
       if (stopping_) return;
       cloud.swap(pending_cloud_);
     }
-    if (!hasOutputSubscribers()) continue;
+    if (!continuous() || !hasOutputSubscribers()) continue;
     const Outcome outcome = process(*cloud, ros::Duration(transform_timeout_), std::nullopt);
     if (outcome.status != Response::SUCCESS) {
       NODELET_ERROR_THROTTLE(5.0, "segmentation failed (status %d): %s", outcome.status, outcome.message.c_str());

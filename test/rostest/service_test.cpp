@@ -5,6 +5,7 @@
 #include <limits>
 
 #include <geometry_msgs/TransformStamped.h>
+#include <dynamic_reconfigure/Reconfigure.h>
 #include <tf2_ros/static_transform_broadcaster.h>
 
 #include "ros_test_support.h"
@@ -166,6 +167,34 @@ TEST(SegmentService, SuccessWithLatestCloudAndCachedMap) {
       EXPECT_LE(p.x, c.x + r + 1e-4);
     }
   }
+}
+
+TEST(SegmentService, LiveThresholdChangeTakesEffect) {
+  // dynamic_reconfigure: s_occl 1.0 keeps no segment (the score must exceed it); back to the
+  // configured value, objects return. Uses the latest cloud and map of the previous test.
+  auto set_s_occl = [](double value) {
+    dynamic_reconfigure::Reconfigure reconfigure;
+    dynamic_reconfigure::DoubleParameter parameter;
+    parameter.name = "s_occl";
+    parameter.value = value;
+    reconfigure.request.config.doubles.push_back(parameter);
+    EXPECT_TRUE(ros::service::waitForService("segmentation/set_parameters", ros::Duration(10)));
+    EXPECT_TRUE(ros::service::call("segmentation/set_parameters", reconfigure));
+    for (const auto& applied : reconfigure.response.config.doubles) {
+      if (applied.name == "s_occl") return applied.value;
+    }
+    return -1.0;
+  };
+  EXPECT_DOUBLE_EQ(set_s_occl(1.0), 1.0);
+  ss::SegmentCloud::Request request;
+  request.timeout = 1.0;
+  auto srv = call(request);
+  ASSERT_EQ(srv.response.status, Response::SUCCESS) << srv.response.message;
+  EXPECT_TRUE(srv.response.objects.objects.empty()) << srv.response.objects.objects.size() << " objects";
+  EXPECT_DOUBLE_EQ(set_s_occl(0.99), 0.99);
+  srv = call(request);
+  ASSERT_EQ(srv.response.status, Response::SUCCESS) << srv.response.message;
+  EXPECT_GE(srv.response.objects.objects.size(), 2u);
 }
 
 int main(int argc, char** argv) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <thread>
 
+#include <dynamic_reconfigure/server.h>
 #include <nodelet/nodelet.h>
 #include <ros/ros.h>
 #include <sensor_msgs/PointCloud2.h>
@@ -17,6 +18,7 @@
 #include <tf2_ros/transform_listener.h>
 
 #include "symmetry_segmentation/SegmentCloud.h"
+#include "symmetry_segmentation/LiveParametersConfig.h"
 #include "symmetry_segmentation/ros/octomap_message.h"
 #include "symmetry_segmentation/ros/scene_assembly.h"
 #include "symmetry_segmentation/segmentation_config.h"
@@ -50,23 +52,27 @@ class SegmentationNodelet : public nodelet::Nodelet {
                                 tf2_ros::filter_failure_reasons::FilterFailureReason reason);
   void octomapCallback(const OctomapMessage::ConstPtr& message);
   bool segmentService(SegmentCloud::Request& request, SegmentCloud::Response& response);
+  void reconfigure(symmetry_segmentation::LiveParametersConfig& live, uint32_t level);
   void workerLoop();
 
   /// Segments `cloud` and publishes the outputs on success; never throws.
   Outcome process(const sensor_msgs::PointCloud2& cloud, const ros::Duration& timeout,
                   const std::optional<AxisAlignedBox>& roi);
   std::string processingFrame(const std::string& cloud_frame) const;
-  bool continuous() const { return mode_ == "continuous"; }
+  bool continuous() const { return continuous_; }
   bool hasOutputSubscribers() const;
 
-  // Parameters (read once in onInit).
-  std::string mode_ = "continuous";
+  // Parameters (read in onInit; mode and the live-tuned values also by dynamic_reconfigure).
+  std::atomic<bool> continuous_{true};
   std::string method_;
   std::string fixed_frame_;
   std::string sensor_frame_;
   double transform_timeout_ = 0.1;
   std::mutex config_mutex_;
   SegmentationConfig config_;
+
+  std::unique_ptr<dynamic_reconfigure::Server<symmetry_segmentation::LiveParametersConfig>> reconfigure_server_;
+  boost::recursive_mutex reconfigure_mutex_;  // dynamic_reconfigure::Server takes a boost mutex
 
   std::unique_ptr<tf2_ros::Buffer> tf_buffer_;
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
