@@ -6,6 +6,7 @@
 #include <set>
 
 #include <pcl/point_types.h>
+#include <tf2_ros/static_transform_broadcaster.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include "ros_test_support.h"
@@ -95,8 +96,76 @@ TEST(SegmentationTopics, GeneratedSceneIsSegmentedLikeTheCoreDoes) {
   EXPECT_EQ(markers->markers.size(), 1 + 3 * objects->objects.size());
 }
 
+TEST(SegmentationTopics, CloudInAnotherFrameGoesThroughTf) {
+  // The cloud arrives in a camera frame; the map (already cached) is in "map", so processing
+  // happens in "map" once tf2 knows camera -> map: same segments, stamped with the cloud's stamp.
+  ros::NodeHandle nh;
+  const ss::Scene scene = ros_test::clutterScene(1);
+  const Eigen::Vector3f origin = scene.sensor_origins.at(0);
+  ss::SegmentedObjectArray::ConstPtr objects;
+  const ros::Time stamp(3000, 0);
+  auto objects_sub = nh.subscribe<ss::SegmentedObjectArray>(
+      "segmentation/objects", 1, [&](const ss::SegmentedObjectArray::ConstPtr& m) { if (m->header.stamp == stamp) objects = m; });
+  auto cloud_pub = nh.advertise<sensor_msgs::PointCloud2>("segmentation/input", 1);
+  ASSERT_TRUE(ros_test::spinUntil([&] { return cloud_pub.getNumSubscribers() > 0 && objects_sub.getNumPublishers() > 0; }, 30));
+  ss::Cloud in_camera = *scene.cloud;
+  for (auto& p : in_camera) {
+    p.x -= origin.x();
+    p.y -= origin.y();
+    p.z -= origin.z();
+  }
+  // First without the transform: dropped by the tf filter (a warning), nothing published.
+  cloud_pub.publish(ros_test::cloudMessage(in_camera, "camera", stamp));
+  EXPECT_FALSE(ros_test::spinUntil([&] { return objects != nullptr; }, 3.0)) << "segmented without a transform";
+
+  tf2_ros::StaticTransformBroadcaster broadcaster;
+  geometry_msgs::TransformStamped transform;
+  transform.header.stamp = ros::Time(0);
+  transform.header.frame_id = "map";
+  transform.child_frame_id = "camera";
+  transform.transform.translation.x = origin.x();
+  transform.transform.translation.y = origin.y();
+  transform.transform.translation.z = origin.z();
+  transform.transform.rotation.w = 1.0;
+  broadcaster.sendTransform(transform);
+  ros::WallDuration(0.5).sleep();
+  cloud_pub.publish(ros_test::cloudMessage(in_camera, "camera", stamp));
+  ASSERT_TRUE(ros_test::spinUntil([&] { return objects != nullptr; }, 60)) << "no objects for the camera-frame cloud";
+  EXPECT_EQ(objects->header.frame_id, "map");
+  EXPECT_GE(objects->objects.size(), 3u);
+  for (const auto& object : objects->objects) {
+    EXPECT_GT(object.bounding_box_pose.position.z, -0.05) << "boxes are in the map frame, on the table";
+  }
+}
+
+TEST(SegmentationTopics, StaleCloudsAreDroppedWhenBusy) {
+  // Ten clouds at once: the node never queues them all; the newest one is always segmented.
+  ros::NodeHandle nh;
+  const ss::Scene scene = ros_test::clutterScene(1);
+  std::vector<ros::Time> stamps;
+  auto objects_sub = nh.subscribe<ss::SegmentedObjectArray>(
+      "segmentation/objects", 10, [&](const ss::SegmentedObjectArray::ConstPtr& m) {
+        if (m->header.stamp.sec >= 4000) stamps.push_back(m->header.stamp);
+      });
+  auto cloud_pub = nh.advertise<sensor_msgs::PointCloud2>("segmentation/input", 10);
+  ASSERT_TRUE(ros_test::spinUntil([&] { return cloud_pub.getNumSubscribers() > 0 && objects_sub.getNumPublishers() > 0; }, 30));
+  const sensor_msgs::PointCloud2 message = ros_test::cloudMessage(*scene.cloud, "map", ros::Time(0));
+  for (int i = 0; i < 10; ++i) {
+    auto copy = boost::make_shared<sensor_msgs::PointCloud2>(message);
+    copy->header.stamp = ros::Time(4000 + i, 0);
+    cloud_pub.publish(copy);
+    ros::WallDuration(0.02).sleep();
+  }
+  ASSERT_TRUE(ros_test::spinUntil([&] { return !stamps.empty() && stamps.back() == ros::Time(4009, 0); }, 60))
+      << "the newest cloud was not segmented";
+  ros_test::spinUntil([] { return false; }, 2.0);  // anything still queued would arrive now
+  EXPECT_LT(stamps.size(), 10u) << "every cloud was segmented: nothing was dropped";
+  EXPECT_EQ(stamps.back(), ros::Time(4009, 0));
+}
+
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
   ros::init(argc, argv, "segmentation_topics_test");
+  ros::NodeHandle keep_node_alive;  // the node shuts down when its last handle goes
   return RUN_ALL_TESTS();
 }
