@@ -94,7 +94,7 @@ class SegmentationNodelet : public nodelet::Nodelet {
   std::mutex queue_mutex_;
   std::condition_variable queue_changed_;
   sensor_msgs::PointCloud2ConstPtr pending_cloud_;
-  bool stopping_ = false;
+  std::atomic<bool> stopping_{false};  // also read by the service under inputs_mutex_
   std::thread worker_;
   std::atomic<std::size_t> dropped_clouds_{0};
 };
