@@ -21,6 +21,19 @@ namespace symmetry_segmentation {
 
 namespace {
 using Response = SegmentCloud::Response;
+
+// Waits for a transform against the wall clock: with use_sim_time a stopped player stops the
+// clock, and tf2's own timeout (in ROS time) would then never expire.
+bool waitForTransform(const tf2_ros::Buffer& buffer, const std::string& target, const std::string& source,
+                      const ros::Time& stamp, const ros::Duration& timeout, std::string* error) {
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(std::max(0.0, timeout.toSec()));
+  while (true) {
+    error->clear();
+    if (buffer.canTransform(target, source, stamp, error)) return true;
+    if (ros::WallTime::now() >= deadline || !ros::ok()) return false;
+    ros::WallDuration(0.01).sleep();
+  }
+}
 }
 
 SegmentationNodelet::~SegmentationNodelet() {
@@ -233,7 +246,7 @@ SegmentationNodelet::Outcome SegmentationNodelet::process(const sensor_msgs::Poi
     const ros::Time stamp = cloud.header.stamp;
     if (frame != cloud.header.frame_id) {
       std::string error;
-      if (!tf_buffer_->canTransform(frame, cloud.header.frame_id, stamp, timeout, &error)) {
+      if (!waitForTransform(*tf_buffer_, frame, cloud.header.frame_id, stamp, timeout, &error)) {
         throw RequestError(Response::TRANSFORM_FAILED, "no transform from cloud frame '" + cloud.header.frame_id +
                                                            "' to processing frame '" + frame + "': " + error);
       }
@@ -246,7 +259,7 @@ SegmentationNodelet::Outcome SegmentationNodelet::process(const sensor_msgs::Poi
     {
       if (!sensor_frame_.empty()) {
         std::string error;
-        if (!tf_buffer_->canTransform(frame, sensor_frame_, stamp, timeout, &error)) {
+        if (!waitForTransform(*tf_buffer_, frame, sensor_frame_, stamp, timeout, &error)) {
           throw RequestError(Response::TRANSFORM_FAILED, "no transform from sensor frame '" + sensor_frame_ +
                                                              "' to processing frame '" + frame + "': " + error);
         }
