@@ -142,4 +142,11 @@ TEST(OctomapConversion, UnknownIdsEmptyDataAndBadResolutionAreErrors) {
   message = ss::binaryMessageFromTree(tree);
   message.resolution = 0.0;
   EXPECT_THROW(ss::occupancyFromMessage(message), ss::InputError);
+  // Bytes that are no tree: truncated tree data runs out and is reported, not half-read.
+  message = ss::binaryMessageFromTree(tree);
+  message.data.resize(message.data.size() / 2);
+  EXPECT_THROW(ss::occupancyFromMessage(message), ss::InputError);
+  message = ss::fullMessageFromTree(tree);
+  message.data.resize(message.data.size() / 2);
+  EXPECT_THROW(ss::occupancyFromMessage(message), ss::InputError);
 }

@@ -197,6 +197,28 @@ TEST(SegmentService, LiveThresholdChangeTakesEffect) {
   EXPECT_GE(srv.response.objects.objects.size(), 2u);
 }
 
+TEST(SegmentService, BadOctomapIsLoggedAndIgnored) {
+  // A map of a tree type the node cannot use, and one with garbage data: both are rejected with
+  // a logged error; the node keeps the last good map and keeps serving.
+  ros::NodeHandle nh;
+  auto map_pub = nh.advertise<ss::OctomapMessage>("segmentation/octomap", 2);
+  ASSERT_TRUE(ros_test::spinUntil([&] { return map_pub.getNumSubscribers() > 0; }, 30));
+  ss::OctomapMessage unsupported = ros_test::octomapMessage(*scene().occupancy, "map");
+  unsupported.binary = false;
+  unsupported.id = "OcTreeStamped";
+  map_pub.publish(unsupported);
+  ss::OctomapMessage garbage = ros_test::octomapMessage(*scene().occupancy, "map");
+  garbage.id = "OcTree";  // binary, but the bytes are no tree
+  garbage.data.assign(100, 7);
+  map_pub.publish(garbage);
+  ros::WallDuration(0.5).sleep();
+  ss::SegmentCloud::Request request;
+  request.timeout = 1.0;
+  const auto srv = call(request);
+  ASSERT_EQ(srv.response.status, Response::SUCCESS) << srv.response.message;
+  EXPECT_GE(srv.response.objects.objects.size(), 2u);
+}
+
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
   ros::init(argc, argv, "segmentation_service_test");
