@@ -1,0 +1,34 @@
+#pragma once
+// A core SegmentationResult -> the node's messages: the object list and the labelled cloud.
+
+#include <vector>
+
+#include <Eigen/Geometry>
+#include <sensor_msgs/PointCloud2.h>
+#include <std_msgs/Header.h>
+
+#include "symmetry_segmentation/SegmentedObjectArray.h"
+#include "symmetry_segmentation/scene.h"
+#include "symmetry_segmentation/segmentation_result.h"
+
+namespace symmetry_segmentation {
+
+struct OrientedBox {
+  Eigen::Vector3f center = Eigen::Vector3f::Zero();
+  Eigen::Quaternionf orientation = Eigen::Quaternionf::Identity();  ///< Box axes (right-handed).
+  Eigen::Vector3f size = Eigen::Vector3f::Zero();                   ///< Full edge lengths along the axes.
+};
+
+/// Box around the finite points `indices` selects, along their principal axes (largest first).
+OrientedBox orientedBoundingBox(const Cloud& cloud, const std::vector<int>& indices);
+
+/// One object per segment (ids 1..N in segment order); clouds and boxes in `cloud`'s frame.
+SegmentedObjectArray objectsMessage(const Cloud& cloud, const SegmentationResult& result,
+                                    const std_msgs::Header& header);
+
+/// Every finite input point with x y z rgb label: label k (1-based) and segment k's colour for
+/// points of segment k (the first segment holding a point wins), label 0 and grey for the rest.
+sensor_msgs::PointCloud2 labelledCloudMessage(const Cloud& cloud, const SegmentationResult& result,
+                                              const std_msgs::Header& header);
+
+}  // namespace symmetry_segmentation

@@ -1,0 +1,86 @@
+#include "symmetry_segmentation/ros/octomap_conversion.h"
+
+#include <sstream>
+#include <string>
+
+#include <octomap/ColorOcTree.h>
+#include <octomap/OcTree.h>
+
+#include "symmetry_segmentation/errors.h"
+
+namespace symmetry_segmentation {
+namespace {
+
+std::stringstream streamOf(const std::vector<int8_t>& data) {
+  std::stringstream stream(std::ios::in | std::ios::out | std::ios::binary);
+  if (!data.empty()) stream.write(reinterpret_cast<const char*>(data.data()), static_cast<std::streamsize>(data.size()));
+  return stream;
+}
+
+std::vector<int8_t> bytesOf(const std::stringstream& stream) {
+  const std::string text = stream.str();
+  return std::vector<int8_t>(text.begin(), text.end());
+}
+
+std::string describe(const OctomapMessage& message) {
+  return std::string(message.binary ? "binary" : "full") + " octomap message (id '" + message.id + "', resolution " +
+         std::to_string(message.resolution) + ", " + std::to_string(message.data.size()) + " bytes)";
+}
+
+}  // namespace
+
+std::shared_ptr<octomap::OcTree> occupancyFromMessage(const OctomapMessage& message) {
+  if (!(message.resolution > 0.0)) throw InputError(describe(message) + ": resolution must be positive");
+  if (message.data.empty()) throw InputError(describe(message) + ": no data");
+  std::stringstream stream = streamOf(message.data);
+  if (message.binary) {
+    // Binary data holds the tree structure and free/occupied bits only: the same for OcTree and
+    // ColorOcTree, so both are read as an OcTree.
+    if (message.id != "OcTree" && message.id != "ColorOcTree") {
+      throw InputError(describe(message) + ": unsupported tree type (expected OcTree or ColorOcTree)");
+    }
+    auto tree = std::make_shared<octomap::OcTree>(message.resolution);
+    if (!tree->readBinaryData(stream) || stream.bad()) throw InputError(describe(message) + ": unreadable binary data");
+    return tree;
+  }
+  std::unique_ptr<octomap::AbstractOcTree> abstract(octomap::AbstractOcTree::createTree(message.id, message.resolution));
+  if (!abstract) throw InputError(describe(message) + ": unknown tree type");
+  if (!abstract->readData(stream) || stream.bad()) throw InputError(describe(message) + ": unreadable tree data");
+  if (auto* tree = dynamic_cast<octomap::OcTree*>(abstract.get())) {
+    abstract.release();
+    return std::shared_ptr<octomap::OcTree>(tree);
+  }
+  if (auto* color = dynamic_cast<octomap::ColorOcTree*>(abstract.get())) {
+    // Keep the occupancy, drop the colours: re-read the colour tree's binary form as an OcTree.
+    std::stringstream binary(std::ios::in | std::ios::out | std::ios::binary);
+    color->writeBinaryData(binary);
+    auto tree = std::make_shared<octomap::OcTree>(message.resolution);
+    tree->readBinaryData(binary);
+    return tree;
+  }
+  throw InputError(describe(message) + ": unsupported tree type (expected OcTree or ColorOcTree)");
+}
+
+OctomapMessage binaryMessageFromTree(const octomap::OcTree& tree) {
+  OctomapMessage message;
+  message.binary = true;
+  message.id = tree.getTreeType();
+  message.resolution = tree.getResolution();
+  std::stringstream stream(std::ios::in | std::ios::out | std::ios::binary);
+  tree.writeBinaryData(stream);
+  message.data = bytesOf(stream);
+  return message;
+}
+
+OctomapMessage fullMessageFromTree(const octomap::AbstractOcTree& tree) {
+  OctomapMessage message;
+  message.binary = false;
+  message.id = tree.getTreeType();
+  message.resolution = tree.getResolution();
+  std::stringstream stream(std::ios::in | std::ios::out | std::ios::binary);
+  tree.writeData(stream);
+  message.data = bytesOf(stream);
+  return message;
+}
+
+}  // namespace symmetry_segmentation

@@ -1,0 +1,121 @@
+#include "symmetry_segmentation/ros/result_conversion.h"
+
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Eigenvalues>
+#include <pcl/common/io.h>
+#include <pcl_conversions/pcl_conversions.h>
+
+#include "symmetry_segmentation/segmentation_output.h"
+
+namespace symmetry_segmentation {
+namespace {
+
+bool finite(const PointT& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+
+}  // namespace
+
+OrientedBox orientedBoundingBox(const Cloud& cloud, const std::vector<int>& indices) {
+  OrientedBox box;
+  std::vector<Eigen::Vector3f> points;
+  points.reserve(indices.size());
+  for (int index : indices) {
+    if (index < 0 || static_cast<std::size_t>(index) >= cloud.size() || !finite(cloud[index])) continue;
+    points.push_back(cloud[index].getVector3fMap());
+  }
+  if (points.empty()) return box;
+  Eigen::Vector3f mean = Eigen::Vector3f::Zero();
+  for (const auto& p : points) mean += p;
+  mean /= static_cast<float>(points.size());
+  Eigen::Matrix3f covariance = Eigen::Matrix3f::Zero();
+  for (const auto& p : points) covariance += (p - mean) * (p - mean).transpose();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3f> solver(covariance);
+  Eigen::Matrix3f axes;  // columns: principal axes, largest variance first
+  axes.col(0) = solver.eigenvectors().col(2);
+  axes.col(1) = solver.eigenvectors().col(1);
+  axes.col(2) = axes.col(0).cross(axes.col(1));  // right-handed
+  if (!axes.allFinite() || std::abs(axes.determinant() - 1.0f) > 1e-3f) axes = Eigen::Matrix3f::Identity();
+  Eigen::Vector3f low = Eigen::Vector3f::Constant(std::numeric_limits<float>::max());
+  Eigen::Vector3f high = -low;
+  for (const auto& p : points) {
+    const Eigen::Vector3f local = axes.transpose() * (p - mean);
+    low = low.cwiseMin(local);
+    high = high.cwiseMax(local);
+  }
+  box.center = mean + axes * (0.5f * (low + high));
+  box.orientation = Eigen::Quaternionf(axes).normalized();
+  box.size = high - low;
+  return box;
+}
+
+SegmentedObjectArray objectsMessage(const Cloud& cloud, const SegmentationResult& result,
+                                    const std_msgs::Header& header) {
+  SegmentedObjectArray message;
+  message.header = header;
+  message.objects.reserve(result.segments.size());
+  for (std::size_t i = 0; i < result.segments.size(); ++i) {
+    const Segment& segment = result.segments[i];
+    SegmentedObject object;
+    object.id = static_cast<uint32_t>(i + 1);
+    object.indices.assign(segment.indices.begin(), segment.indices.end());
+    Cloud points;
+    pcl::copyPointCloud(cloud, segment.indices, points);
+    pcl::toROSMsg(points, object.cloud);
+    object.cloud.header = header;
+    if (segment.symmetry) {
+      object.has_symmetry_plane = true;
+      object.symmetry_plane.coef = {segment.symmetry->normal.x(), segment.symmetry->normal.y(),
+                                    segment.symmetry->normal.z(), segment.symmetry->distance};
+    }
+    const OrientedBox box = orientedBoundingBox(cloud, segment.indices);
+    object.bounding_box_pose.position.x = box.center.x();
+    object.bounding_box_pose.position.y = box.center.y();
+    object.bounding_box_pose.position.z = box.center.z();
+    object.bounding_box_pose.orientation.w = box.orientation.w();
+    object.bounding_box_pose.orientation.x = box.orientation.x();
+    object.bounding_box_pose.orientation.y = box.orientation.y();
+    object.bounding_box_pose.orientation.z = box.orientation.z();
+    object.bounding_box_size.x = box.size.x();
+    object.bounding_box_size.y = box.size.y();
+    object.bounding_box_size.z = box.size.z();
+    if (segment.scores) {
+      object.has_scores = true;
+      object.occlusion_score = segment.scores->occlusion;
+      object.smoothness_score = segment.scores->smoothness;
+    }
+    message.objects.push_back(std::move(object));
+  }
+  return message;
+}
+
+sensor_msgs::PointCloud2 labelledCloudMessage(const Cloud& cloud, const SegmentationResult& result,
+                                              const std_msgs::Header& header) {
+  const pcl::PointCloud<pcl::PointXYZRGB> colored = colorBySegment(cloud, result.segments);
+  std::vector<uint32_t> labels(cloud.size(), 0);
+  for (std::size_t s = result.segments.size(); s-- > 0;) {  // first segment holding a point wins
+    for (int index : result.segments[s].indices) {
+      if (index >= 0 && static_cast<std::size_t>(index) < labels.size()) labels[index] = static_cast<uint32_t>(s + 1);
+    }
+  }
+  pcl::PointCloud<pcl::PointXYZRGBL> labelled;
+  labelled.reserve(cloud.size());
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (!finite(cloud[i])) continue;
+    pcl::PointXYZRGBL point;
+    point.x = cloud[i].x;
+    point.y = cloud[i].y;
+    point.z = cloud[i].z;
+    point.r = colored[i].r;
+    point.g = colored[i].g;
+    point.b = colored[i].b;
+    point.label = labels[i];
+    labelled.push_back(point);
+  }
+  sensor_msgs::PointCloud2 message;
+  pcl::toROSMsg(labelled, message);
+  message.header = header;
+  return message;
+}
+
+}  // namespace symmetry_segmentation

@@ -1,0 +1,40 @@
+#include "symmetry_segmentation/ros/scene_assembly.h"
+
+#include "symmetry_segmentation/SegmentCloud.h"
+#include "symmetry_segmentation/errors.h"
+#include "symmetry_segmentation/ros/cloud_conversion.h"
+
+namespace symmetry_segmentation {
+
+Scene assembleScene(const sensor_msgs::PointCloud2& cloud, const SceneInputs& inputs) {
+  using Response = SegmentCloud::Response;
+  Scene scene;
+  try {
+    scene = sceneFromCloudMessage(cloud);
+    if (!inputs.cloud_to_processing.matrix().isIdentity(0.0)) {
+      transformCloud(*scene.cloud, inputs.cloud_to_processing, scene.has_normals);
+    }
+    if (inputs.region_of_interest) {
+      cropToBox(*scene.cloud, inputs.region_of_interest->min, inputs.region_of_interest->max);
+    }
+  } catch (const InputError& error) {
+    throw RequestError(Response::INVALID_INPUT, error.what());
+  }
+  if (countFinitePoints(*scene.cloud) == 0) {
+    throw RequestError(Response::INVALID_INPUT,
+                       inputs.region_of_interest ? "no finite point inside the region of interest"
+                                                 : "cloud has no finite point");
+  }
+  // The sensor origin is passed on even with a map: the core orients normals and the table
+  // plane toward it (without one it votes, which a large table patch can get wrong).
+  if (inputs.sensor_origin) scene.sensor_origins.push_back(*inputs.sensor_origin);
+  if (inputs.occupancy) {
+    scene.occupancy = inputs.occupancy;
+  } else if (!inputs.sensor_origin) {
+    throw RequestError(Response::NO_OCCUPANCY,
+                       "no OctoMap received, and no sensor frame or cloud viewpoint to ray-cast one from");
+  }
+  return scene;
+}
+
+}  // namespace symmetry_segmentation

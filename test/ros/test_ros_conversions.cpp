@@ -1,0 +1,303 @@
+// PointCloud2 -> Scene, scene assembly statuses, result -> objects / labelled cloud / markers,
+// and parameters from the private namespace. No roscore needed.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include <octomap/OcTree.h>
+#include <pcl/point_types.h>
+#include <pcl_conversions/pcl_conversions.h>
+
+#include "symmetry_segmentation/SegmentCloud.h"
+#include "symmetry_segmentation/errors.h"
+#include "symmetry_segmentation/ros/cloud_conversion.h"
+#include "symmetry_segmentation/ros/marker_conversion.h"
+#include "symmetry_segmentation/ros/parameters.h"
+#include "symmetry_segmentation/ros/result_conversion.h"
+#include "symmetry_segmentation/ros/scene_assembly.h"
+#include "symmetry_segmentation/segmentation_output.h"
+
+namespace ss = symmetry_segmentation;
+using Response = ss::SegmentCloud::Response;
+
+namespace {
+
+const float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+ss::PointT point(float x, float y, float z, float nx = 0, float ny = 0, float nz = 1) {
+  ss::PointT p;
+  p.x = x;
+  p.y = y;
+  p.z = z;
+  p.normal_x = nx;
+  p.normal_y = ny;
+  p.normal_z = nz;
+  p.r = 10;
+  p.g = 20;
+  p.b = 30;
+  return p;
+}
+
+// A 0.2 x 0.1 x 0.05 grid of points centred on (1, 2, 3), axis-aligned.
+ss::Cloud boxCloud() {
+  ss::Cloud cloud;
+  for (float x = -0.1f; x <= 0.1001f; x += 0.02f) {
+    for (float y = -0.05f; y <= 0.0501f; y += 0.025f) {
+      for (float z = -0.025f; z <= 0.0251f; z += 0.025f) cloud.push_back(point(1 + x, 2 + y, 3 + z));
+    }
+  }
+  return cloud;
+}
+
+sensor_msgs::PointCloud2 xyzMessage(const std::vector<Eigen::Vector3f>& points) {
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  for (const auto& p : points) cloud.push_back(pcl::PointXYZ(p.x(), p.y(), p.z()));
+  sensor_msgs::PointCloud2 message;
+  pcl::toROSMsg(cloud, message);
+  message.header.frame_id = "camera";
+  return message;
+}
+
+uint8_t statusOf(const sensor_msgs::PointCloud2& cloud, const ss::SceneInputs& inputs) {
+  try {
+    ss::assembleScene(cloud, inputs);
+  } catch (const ss::RequestError& error) {
+    return error.status();
+  }
+  return Response::SUCCESS;
+}
+
+}  // namespace
+
+TEST(CloudConversion, XyzCloudKeepsOrderAndHasNoNormals) {
+  const auto message = xyzMessage({{1, 2, 3}, {kNaN, kNaN, kNaN}, {4, 5, 6}});
+  const ss::Scene scene = ss::sceneFromCloudMessage(message);
+  ASSERT_EQ(scene.size(), 3u);
+  EXPECT_FALSE(scene.has_normals);
+  EXPECT_FALSE(scene.has_color);
+  EXPECT_FLOAT_EQ(scene.cloud->points[2].y, 5.0f);
+  EXPECT_TRUE(std::isnan(scene.cloud->points[1].x));
+  EXPECT_EQ(ss::countFinitePoints(*scene.cloud), 2u);
+}
+
+TEST(CloudConversion, NormalsAndColourAreDetected) {
+  ss::Cloud cloud;
+  cloud.push_back(point(1, 0, 0, 0, 1, 0));
+  sensor_msgs::PointCloud2 message;
+  pcl::toROSMsg(cloud, message);
+  const ss::Scene scene = ss::sceneFromCloudMessage(message);
+  EXPECT_TRUE(scene.has_normals);
+  EXPECT_TRUE(scene.has_color);
+  EXPECT_FLOAT_EQ(scene.cloud->points[0].normal_y, 1.0f);
+  EXPECT_EQ(scene.cloud->points[0].g, 20);
+}
+
+TEST(CloudConversion, EmptyOrFieldlessCloudsAreInputErrors) {
+  EXPECT_THROW(ss::sceneFromCloudMessage(xyzMessage({})), ss::InputError);
+  sensor_msgs::PointCloud2 no_xyz = xyzMessage({{1, 2, 3}});
+  no_xyz.fields.pop_back();  // drop z
+  EXPECT_THROW(ss::sceneFromCloudMessage(no_xyz), ss::InputError);
+  sensor_msgs::PointCloud2 short_data = xyzMessage({{1, 2, 3}, {4, 5, 6}});
+  short_data.data.resize(short_data.data.size() / 2);
+  EXPECT_THROW(ss::sceneFromCloudMessage(short_data), ss::InputError);
+}
+
+TEST(CloudConversion, TransformMovesPointsAndRotatesNormals) {
+  ss::Cloud cloud;
+  cloud.push_back(point(1, 0, 0, 1, 0, 0));
+  Eigen::Isometry3d transform = Eigen::Isometry3d::Identity();
+  transform.rotate(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
+  transform.pretranslate(Eigen::Vector3d(0, 0, 1));
+  ss::transformCloud(cloud, transform, true);
+  EXPECT_NEAR(cloud[0].x, 0.0f, 1e-6f);
+  EXPECT_NEAR(cloud[0].y, 1.0f, 1e-6f);
+  EXPECT_NEAR(cloud[0].z, 1.0f, 1e-6f);
+  EXPECT_NEAR(cloud[0].normal_x, 0.0f, 1e-6f);
+  EXPECT_NEAR(cloud[0].normal_y, 1.0f, 1e-6f);
+}
+
+TEST(CloudConversion, CropToBoxKeepsIndices) {
+  ss::Cloud cloud;
+  cloud.push_back(point(0, 0, 0));
+  cloud.push_back(point(2, 0, 0));
+  ss::cropToBox(cloud, Eigen::Vector3f(-1, -1, -1), Eigen::Vector3f(1, 1, 1));
+  ASSERT_EQ(cloud.size(), 2u);
+  EXPECT_FLOAT_EQ(cloud[0].x, 0.0f);
+  EXPECT_TRUE(std::isnan(cloud[1].x));
+  EXPECT_THROW(ss::cropToBox(cloud, Eigen::Vector3f(1, 0, 0), Eigen::Vector3f(0, 1, 1)), ss::InputError);
+}
+
+TEST(SceneAssembly, StatusPerFailureCause) {
+  ss::SceneInputs inputs;
+  inputs.sensor_origin = Eigen::Vector3f::Zero();
+  EXPECT_EQ(statusOf(xyzMessage({{0, 0, 1}}), inputs), Response::SUCCESS);
+  EXPECT_EQ(statusOf(xyzMessage({}), inputs), Response::INVALID_INPUT);
+  EXPECT_EQ(statusOf(xyzMessage({{kNaN, kNaN, kNaN}, {kNaN, 0, 1}}), inputs), Response::INVALID_INPUT);
+  inputs.region_of_interest = ss::AxisAlignedBox{Eigen::Vector3f(5, 5, 5), Eigen::Vector3f(6, 6, 6)};
+  EXPECT_EQ(statusOf(xyzMessage({{0, 0, 1}}), inputs), Response::INVALID_INPUT);
+  inputs.region_of_interest.reset();
+  inputs.sensor_origin.reset();
+  EXPECT_EQ(statusOf(xyzMessage({{0, 0, 1}}), inputs), Response::NO_OCCUPANCY);
+  inputs.occupancy = std::make_shared<octomap::OcTree>(0.01);
+  EXPECT_EQ(statusOf(xyzMessage({{0, 0, 1}}), inputs), Response::SUCCESS);
+  // With a map, a known origin is still passed on (the core orients normals toward it).
+  inputs.sensor_origin = Eigen::Vector3f(0, -1, 1);
+  const ss::Scene scene = ss::assembleScene(xyzMessage({{0, 0, 1}}), inputs);
+  EXPECT_TRUE(scene.occupancy);
+  ASSERT_EQ(scene.sensor_origins.size(), 1u);
+  EXPECT_FLOAT_EQ(scene.sensor_origins[0].y(), -1.0f);
+}
+
+TEST(SceneAssembly, TransformsIntoProcessingFrameAndUsesOrigin) {
+  ss::SceneInputs inputs;
+  inputs.cloud_to_processing = Eigen::Translation3d(0, 0, 2) * Eigen::Isometry3d::Identity();
+  inputs.sensor_origin = Eigen::Vector3f(0, 0, 2);
+  const ss::Scene scene = ss::assembleScene(xyzMessage({{0, 0, 1}}), inputs);
+  EXPECT_FLOAT_EQ(scene.cloud->points[0].z, 3.0f);
+  ASSERT_EQ(scene.sensor_origins.size(), 1u);
+  EXPECT_FLOAT_EQ(scene.sensor_origins[0].z(), 2.0f);
+  EXPECT_FALSE(scene.occupancy);
+}
+
+TEST(ResultConversion, OrientedBoxFindsCentreSizeAndAxes) {
+  const ss::Cloud cloud = boxCloud();
+  std::vector<int> all(cloud.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  const ss::OrientedBox box = ss::orientedBoundingBox(cloud, all);
+  EXPECT_NEAR(box.center.x(), 1.0f, 1e-4f);
+  EXPECT_NEAR(box.center.y(), 2.0f, 1e-4f);
+  EXPECT_NEAR(box.center.z(), 3.0f, 1e-4f);
+  EXPECT_NEAR(box.size.x(), 0.2f, 1e-4f);   // largest extent first
+  EXPECT_NEAR(box.size.y(), 0.1f, 1e-4f);
+  EXPECT_NEAR(box.size.z(), 0.05f, 1e-4f);
+  const Eigen::Vector3f first_axis = box.orientation * Eigen::Vector3f::UnitX();
+  EXPECT_NEAR(std::abs(first_axis.x()), 1.0f, 1e-4f);
+  EXPECT_NEAR(box.orientation.toRotationMatrix().determinant(), 1.0f, 1e-4f);
+}
+
+TEST(ResultConversion, ObjectsCarryIdsIndicesPlanesAndScores) {
+  const ss::Cloud cloud = boxCloud();
+  ss::SegmentationResult result;
+  ss::Segment with_plane;
+  with_plane.indices = {0, 1, 2, 5};
+  with_plane.symmetry = ss::SymmetryPlane{Eigen::Vector3f::UnitX(), -1.0f};
+  with_plane.scores = ss::SegmentScores{0.995f, 0.01f};
+  ss::Segment without_plane;
+  without_plane.indices = {7, 8};
+  result.segments = {with_plane, without_plane};
+  std_msgs::Header header;
+  header.frame_id = "map";
+  header.stamp = ros::Time(42, 0);
+  const auto message = ss::objectsMessage(cloud, result, header);
+  EXPECT_EQ(message.header.frame_id, "map");
+  ASSERT_EQ(message.objects.size(), 2u);
+  const auto& first = message.objects[0];
+  EXPECT_EQ(first.id, 1u);
+  EXPECT_EQ(first.indices, std::vector<int32_t>({0, 1, 2, 5}));
+  EXPECT_EQ(first.cloud.width * first.cloud.height, 4u);
+  EXPECT_EQ(first.cloud.header.stamp, ros::Time(42, 0));
+  ASSERT_TRUE(first.has_symmetry_plane);
+  EXPECT_DOUBLE_EQ(first.symmetry_plane.coef[0], 1.0);
+  EXPECT_DOUBLE_EQ(first.symmetry_plane.coef[3], -1.0);
+  ASSERT_TRUE(first.has_scores);
+  EXPECT_FLOAT_EQ(first.occlusion_score, 0.995f);
+  EXPECT_FLOAT_EQ(first.smoothness_score, 0.01f);
+  EXPECT_EQ(message.objects[1].id, 2u);
+  EXPECT_FALSE(message.objects[1].has_symmetry_plane);
+  EXPECT_FALSE(message.objects[1].has_scores);
+
+  const auto empty = ss::objectsMessage(cloud, ss::SegmentationResult{}, header);
+  EXPECT_TRUE(empty.objects.empty());
+  EXPECT_EQ(empty.header.frame_id, "map");
+}
+
+TEST(ResultConversion, LabelledCloudHasLabelsAndSegmentColours) {
+  ss::Cloud cloud;
+  for (int i = 0; i < 5; ++i) cloud.push_back(point(i, 0, 0));
+  cloud[4].x = kNaN;  // dropped
+  ss::SegmentationResult result;
+  result.segments.resize(2);
+  result.segments[0].indices = {1, 2};
+  result.segments[1].indices = {2, 3};  // point 2 belongs to the first segment
+  std_msgs::Header header;
+  header.frame_id = "map";
+  const auto message = ss::labelledCloudMessage(cloud, result, header);
+  EXPECT_TRUE(ss::hasField(message, "label"));
+  EXPECT_TRUE(ss::hasField(message, "rgb") || ss::hasField(message, "rgba"));
+  pcl::PointCloud<pcl::PointXYZRGBL> labelled;
+  pcl::fromROSMsg(message, labelled);
+  ASSERT_EQ(labelled.size(), 4u);
+  EXPECT_EQ(labelled[0].label, 0u);
+  EXPECT_EQ(labelled[1].label, 1u);
+  EXPECT_EQ(labelled[2].label, 1u);
+  EXPECT_EQ(labelled[3].label, 2u);
+  const Eigen::Vector3i second = ss::segmentColor(1);
+  EXPECT_EQ(labelled[3].r, second.x());
+  EXPECT_EQ(labelled[3].g, second.y());
+  EXPECT_EQ(labelled[3].b, second.z());
+}
+
+TEST(MarkerConversion, DeleteAllThenPlanePatchArrowAndText) {
+  const ss::Cloud cloud = boxCloud();  // x in [0.9, 1.1], y in [1.95, 2.05], z in [2.975, 3.025]
+  std::vector<int> all(cloud.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  ss::SegmentationResult result;
+  result.segments.resize(1);
+  result.segments[0].indices = all;
+  result.segments[0].symmetry = ss::SymmetryPlane{Eigen::Vector3f::UnitX(), -1.0f};  // x = 1
+  std_msgs::Header header;
+  header.frame_id = "map";
+  const auto markers = ss::symmetryMarkers(cloud, result, header);
+  ASSERT_EQ(markers.markers.size(), 4u);
+  EXPECT_EQ(markers.markers[0].action, visualization_msgs::Marker::DELETEALL);
+  const auto& plane = markers.markers[1];
+  EXPECT_EQ(plane.type, visualization_msgs::Marker::CUBE);
+  EXPECT_EQ(plane.ns, "planes");
+  EXPECT_EQ(plane.header.frame_id, "map");
+  EXPECT_NEAR(plane.pose.position.x, 1.0, 1e-5);  // on the plane
+  EXPECT_NEAR(plane.pose.position.y, 2.0, 1e-4);
+  EXPECT_NEAR(plane.pose.position.z, 3.0, 1e-4);
+  // Patch spans the object's y (0.1) and z (0.05) extents, in some order.
+  const double a = std::max(plane.scale.y, plane.scale.z), b = std::min(plane.scale.y, plane.scale.z);
+  EXPECT_NEAR(a, 0.1, 1e-4);
+  EXPECT_NEAR(b, 0.05, 1e-4);
+  EXPECT_LT(plane.color.a, 1.0f);
+  const Eigen::Vector3f segment_color = ss::segmentColor(0).cast<float>() / 255.0f;
+  EXPECT_NEAR(plane.color.r, segment_color.x(), 1e-6);
+  const auto& arrow = markers.markers[2];
+  EXPECT_EQ(arrow.type, visualization_msgs::Marker::ARROW);
+  ASSERT_EQ(arrow.points.size(), 2u);
+  EXPECT_NEAR(std::abs(arrow.points[1].x - arrow.points[0].x), 0.1, 1e-5);
+  EXPECT_NEAR(arrow.points[1].y - arrow.points[0].y, 0.0, 1e-5);
+  const auto& text = markers.markers[3];
+  EXPECT_EQ(text.type, visualization_msgs::Marker::TEXT_VIEW_FACING);
+  EXPECT_EQ(text.text, "1");
+  EXPECT_GT(text.pose.position.z, 3.025);
+
+  const auto none = ss::symmetryMarkers(cloud, ss::SegmentationResult{}, header);
+  ASSERT_EQ(none.markers.size(), 1u);
+  EXPECT_EQ(none.markers[0].action, visualization_msgs::Marker::DELETEALL);
+}
+
+TEST(Parameters, NestedNamespacesSetTheSameKeysAsTheYamlFile) {
+  XmlRpc::XmlRpcValue symmetry;
+  symmetry["filter"]["s_occl"] = 0.97;
+  symmetry["filter"]["min_segment_points"] = 55;
+  symmetry["refinement"]["enabled"] = false;
+  symmetry["filter"]["no_such_key"] = 1.0;
+  ss::SegmentationConfig config;
+  std::vector<std::string> errors;
+  ss::applyParameters("symmetry", symmetry, config, errors);
+  EXPECT_FLOAT_EQ(config.symmetry.filter.s_occl, 0.97f);
+  EXPECT_EQ(config.symmetry.filter.min_segment_points, 55);
+  EXPECT_FALSE(config.symmetry.refinement.enabled);
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_NE(errors[0].find("symmetry.filter.no_such_key"), std::string::npos);
+
+  XmlRpc::XmlRpcValue preprocessing;
+  preprocessing["voxel_size"] = 0.02;
+  ss::applyParameters("preprocessing", preprocessing, config, errors);
+  EXPECT_FLOAT_EQ(config.preprocessing.voxel_size, 0.02f);
+  EXPECT_EQ(errors.size(), 1u);
+}

@@ -1,0 +1,152 @@
+// The octomap_msgs/Octomap stand-in: identity on the wire, serialisation, tree conversions.
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include <boost/make_shared.hpp>
+#include <octomap/ColorOcTree.h>
+#include <octomap/OcTree.h>
+#include <octomap/OcTreeStamped.h>
+#include <ros/serialization.h>
+
+#include "symmetry_segmentation/errors.h"
+#include "symmetry_segmentation/occupancy.h"
+#include "symmetry_segmentation/ros/octomap_conversion.h"
+#include "symmetry_segmentation/ros/octomap_message.h"
+
+namespace ss = symmetry_segmentation;
+namespace mt = ros::message_traits;
+
+namespace {
+
+// Occupied slab at z = 0.5, free space between it and the origin.
+template <class Tree>
+void fillScene(Tree& tree) {
+  octomap::Pointcloud points;
+  for (double x = -0.2; x <= 0.2; x += 0.02) {
+    for (double y = -0.2; y <= 0.2; y += 0.02) points.push_back(x, y, 0.5);
+  }
+  tree.insertPointCloud(points, octomap::point3d(0, 0, 0));
+}
+
+void expectSameOccupancy(const std::shared_ptr<octomap::OcTree>& tree) {
+  ASSERT_TRUE(tree);
+  const ss::OccupancyMap map(tree);
+  EXPECT_EQ(map.classify({0.0f, 0.0f, 0.5f}), ss::Occupancy::Occupied);
+  EXPECT_EQ(map.classify({0.0f, 0.0f, 0.25f}), ss::Occupancy::Free);
+  EXPECT_EQ(map.classify({0.0f, 0.0f, 0.8f}), ss::Occupancy::Unknown);
+  EXPECT_EQ(map.classify({1.0f, 1.0f, -1.0f}), ss::Occupancy::Unknown);
+}
+
+}  // namespace
+
+TEST(OctomapMessage, IdentifiesAsOctomapMsgsOctomap) {
+  EXPECT_STREQ(mt::DataType<ss::OctomapMessage>::value(), "octomap_msgs/Octomap");
+  EXPECT_STREQ(mt::MD5Sum<ss::OctomapMessage>::value(), "9a45536b45c5e409cd49f04bb2d9999f");
+  const std::string definition = mt::Definition<ss::OctomapMessage>::value();
+  EXPECT_EQ(definition.rfind("# A 3D map in binary format, as Octree\nHeader header\n", 0), 0u);
+  EXPECT_NE(definition.find("\nint8[] data\n"), std::string::npos);
+  EXPECT_NE(definition.find("MSG: std_msgs/Header\n"), std::string::npos);
+  EXPECT_TRUE(mt::HasHeader<ss::OctomapMessage>::value);
+  ss::OctomapMessage message;
+  message.header.frame_id = "map";
+  message.header.stamp = ros::Time(12, 34);
+  EXPECT_EQ(*mt::frameId(message), "map");
+  EXPECT_EQ(*mt::timeStamp(message), ros::Time(12, 34));
+}
+
+TEST(OctomapMessage, SerialisationRoundTripsEveryField) {
+  ss::OctomapMessage message;
+  message.header.seq = 7;
+  message.header.stamp = ros::Time(100, 5);
+  message.header.frame_id = "odom";
+  message.binary = true;
+  message.id = "OcTree";
+  message.resolution = 0.025;
+  message.data = {1, -2, 3, 127, -128};
+  const uint32_t length = ros::serialization::serializationLength(message);
+  // header (4 + 8 + 4 + 4) + bool 1 + string (4 + 6) + float64 8 + int8[] (4 + 5)
+  EXPECT_EQ(length, 4u + 8u + 4u + 4u + 1u + 10u + 8u + 9u);
+  boost::shared_array<uint8_t> buffer(new uint8_t[length]);
+  ros::serialization::OStream out(buffer.get(), length);
+  ros::serialization::serialize(out, message);
+  ss::OctomapMessage copy;
+  ros::serialization::IStream in(buffer.get(), length);
+  ros::serialization::deserialize(in, copy);
+  EXPECT_EQ(copy.header.seq, 7u);
+  EXPECT_EQ(copy.header.stamp, ros::Time(100, 5));
+  EXPECT_EQ(copy.header.frame_id, "odom");
+  EXPECT_TRUE(copy.binary);
+  EXPECT_EQ(copy.id, "OcTree");
+  EXPECT_DOUBLE_EQ(copy.resolution, 0.025);
+  EXPECT_EQ(copy.data, message.data);
+}
+
+TEST(OctomapConversion, BinaryMessageKeepsOccupancy) {
+  octomap::OcTree tree(0.02);
+  fillScene(tree);
+  const ss::OctomapMessage message = ss::binaryMessageFromTree(tree);
+  EXPECT_TRUE(message.binary);
+  EXPECT_EQ(message.id, "OcTree");
+  EXPECT_DOUBLE_EQ(message.resolution, 0.02);
+  const auto restored = ss::occupancyFromMessage(message);
+  EXPECT_DOUBLE_EQ(restored->getResolution(), 0.02);
+  EXPECT_EQ(restored->getNumLeafNodes(), tree.getNumLeafNodes());
+  expectSameOccupancy(restored);
+}
+
+TEST(OctomapConversion, FullMessageKeepsOccupancy) {
+  octomap::OcTree tree(0.02);
+  fillScene(tree);
+  const ss::OctomapMessage message = ss::fullMessageFromTree(tree);
+  EXPECT_FALSE(message.binary);
+  EXPECT_EQ(message.id, "OcTree");
+  const auto restored = ss::occupancyFromMessage(message);
+  EXPECT_EQ(restored->size(), tree.size());
+  expectSameOccupancy(restored);
+}
+
+TEST(OctomapConversion, FullColorTreeBecomesOccupancy) {
+  octomap::ColorOcTree tree(0.02);
+  fillScene(tree);
+  const ss::OctomapMessage message = ss::fullMessageFromTree(tree);
+  EXPECT_EQ(message.id, "ColorOcTree");
+  expectSameOccupancy(ss::occupancyFromMessage(message));
+}
+
+TEST(OctomapConversion, OtherTreeTypesAreAClearError) {
+  octomap::OcTreeStamped tree(0.02);
+  fillScene(tree);
+  const ss::OctomapMessage message = ss::fullMessageFromTree(tree);
+  EXPECT_EQ(message.id, "OcTreeStamped");
+  try {
+    ss::occupancyFromMessage(message);
+    FAIL() << "an OcTreeStamped was accepted";
+  } catch (const ss::InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("unsupported tree type"), std::string::npos) << error.what();
+  }
+}
+
+TEST(OctomapConversion, UnknownIdsEmptyDataAndBadResolutionAreErrors) {
+  octomap::OcTree tree(0.02);
+  fillScene(tree);
+  ss::OctomapMessage message = ss::fullMessageFromTree(tree);
+  message.id = "NoSuchTree";
+  EXPECT_THROW(ss::occupancyFromMessage(message), ss::InputError);
+  message = ss::binaryMessageFromTree(tree);
+  message.id = "NoSuchTree";
+  EXPECT_THROW(ss::occupancyFromMessage(message), ss::InputError);
+  message = ss::binaryMessageFromTree(tree);
+  message.data.clear();
+  EXPECT_THROW(ss::occupancyFromMessage(message), ss::InputError);
+  message = ss::binaryMessageFromTree(tree);
+  message.resolution = 0.0;
+  EXPECT_THROW(ss::occupancyFromMessage(message), ss::InputError);
+  // Bytes that are no tree: truncated tree data runs out and is reported, not half-read.
+  message = ss::binaryMessageFromTree(tree);
+  message.data.resize(message.data.size() / 2);
+  EXPECT_THROW(ss::occupancyFromMessage(message), ss::InputError);
+  message = ss::fullMessageFromTree(tree);
+  message.data.resize(message.data.size() / 2);
+  EXPECT_THROW(ss::occupancyFromMessage(message), ss::InputError);
+}

@@ -1,0 +1,227 @@
+// rostest: ~segment returns SUCCESS with objects, and each failure status on its own cause.
+// The tests run in order: first without any input, then with a cloud, then with a map.
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include <geometry_msgs/TransformStamped.h>
+#include <dynamic_reconfigure/Reconfigure.h>
+#include <tf2_ros/static_transform_broadcaster.h>
+
+#include "ros_test_support.h"
+#include "symmetry_segmentation/SegmentCloud.h"
+
+namespace ss = symmetry_segmentation;
+using Response = ss::SegmentCloud::Response;
+
+namespace {
+
+const ss::Scene& scene() {
+  static const ss::Scene generated = ros_test::clutterScene(2);
+  return generated;
+}
+
+ss::SegmentCloud call(const ss::SegmentCloud::Request& request) {
+  ss::SegmentCloud srv;
+  srv.request = request;
+  EXPECT_TRUE(ros::service::waitForService("segmentation/segment", ros::Duration(30)));
+  EXPECT_TRUE(ros::service::call("segmentation/segment", srv)) << "the call itself failed (node died?)";
+  return srv;
+}
+
+sensor_msgs::PointCloud2 cloudWith(const std::vector<Eigen::Vector3f>& points, const std::string& frame) {
+  ss::Cloud cloud;
+  for (const auto& p : points) {
+    ss::PointT q;
+    q.x = p.x();
+    q.y = p.y();
+    q.z = p.z();
+    cloud.push_back(q);
+  }
+  return ros_test::cloudMessage(cloud, frame, ros::Time::now());
+}
+
+}  // namespace
+
+TEST(SegmentService, NoCloudYet) {
+  const auto srv = call({});
+  EXPECT_EQ(srv.response.status, Response::NO_CLOUD) << srv.response.message;
+  EXPECT_FALSE(srv.response.message.empty());
+}
+
+TEST(SegmentService, TimeoutWaitingForACloud) {
+  ss::SegmentCloud::Request request;
+  request.timeout = 0.3;
+  const ros::WallTime start = ros::WallTime::now();
+  const auto srv = call(request);
+  EXPECT_EQ(srv.response.status, Response::TIMEOUT) << srv.response.message;
+  EXPECT_GE((ros::WallTime::now() - start).toSec(), 0.3);
+}
+
+TEST(SegmentService, EmptyCloudIsInvalid) {
+  ss::SegmentCloud::Request request;
+  request.cloud = cloudWith({}, "map");
+  ASSERT_FALSE(request.cloud.fields.empty());
+  const auto srv = call(request);
+  EXPECT_EQ(srv.response.status, Response::INVALID_INPUT) << srv.response.message;
+  EXPECT_NE(srv.response.message.find("empty"), std::string::npos) << srv.response.message;
+}
+
+TEST(SegmentService, NanOnlyCloudIsInvalid) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  ss::SegmentCloud::Request request;
+  request.cloud = cloudWith({{nan, nan, nan}, {nan, 0, 1}, {0, nan, 1}}, "map");
+  const auto srv = call(request);
+  EXPECT_EQ(srv.response.status, Response::INVALID_INPUT) << srv.response.message;
+  EXPECT_NE(srv.response.message.find("finite"), std::string::npos) << srv.response.message;
+}
+
+TEST(SegmentService, NoOccupancyAndNoSensorFrame) {
+  // In the fixed frame itself, so the cloud carries no viewpoint either.
+  ss::SegmentCloud::Request request;
+  request.cloud = ros_test::cloudMessage(*scene().cloud, "map", ros::Time::now());
+  const auto srv = call(request);
+  EXPECT_EQ(srv.response.status, Response::NO_OCCUPANCY) << srv.response.message;
+}
+
+TEST(SegmentService, MissingTransform) {
+  ss::SegmentCloud::Request request;
+  request.cloud = ros_test::cloudMessage(*scene().cloud, "frame_nobody_publishes", ros::Time::now());
+  const auto srv = call(request);
+  EXPECT_EQ(srv.response.status, Response::TRANSFORM_FAILED) << srv.response.message;
+  EXPECT_NE(srv.response.message.find("frame_nobody_publishes"), std::string::npos) << srv.response.message;
+}
+
+TEST(SegmentService, RayCastFromTheCloudViewpoint) {
+  // The cloud in a camera frame at the first sensor origin: the node transforms it into "map"
+  // and ray-casts occupancy from the camera frame's origin.
+  const Eigen::Vector3f origin = scene().sensor_origins.at(0);
+  tf2_ros::StaticTransformBroadcaster broadcaster;
+  geometry_msgs::TransformStamped transform;
+  transform.header.stamp = ros::Time::now();
+  transform.header.frame_id = "map";
+  transform.child_frame_id = "camera";
+  transform.transform.translation.x = origin.x();
+  transform.transform.translation.y = origin.y();
+  transform.transform.translation.z = origin.z();
+  transform.transform.rotation.w = 1.0;
+  broadcaster.sendTransform(transform);
+  ss::Cloud in_camera = *scene().cloud;
+  for (auto& p : in_camera) {
+    p.x -= origin.x();
+    p.y -= origin.y();
+    p.z -= origin.z();
+  }
+  ss::SegmentCloud::Request request;
+  request.cloud = ros_test::cloudMessage(in_camera, "camera", ros::Time(0));
+  request.timeout = 2.0;
+  const auto srv = call(request);
+  ASSERT_EQ(srv.response.status, Response::SUCCESS) << srv.response.message;
+  EXPECT_EQ(srv.response.objects.header.frame_id, "map");
+  for (const auto& object : srv.response.objects.objects) {
+    // Back in the map frame: the boxes sit on the table (z = 0), not around the camera.
+    EXPECT_GT(object.bounding_box_pose.position.z, -0.05);
+    EXPECT_LT(object.bounding_box_pose.position.z, 0.5);
+  }
+}
+
+TEST(SegmentService, SuccessWithLatestCloudAndCachedMap) {
+  ros::NodeHandle nh;
+  auto cloud_pub = nh.advertise<sensor_msgs::PointCloud2>("segmentation/input", 1, true);
+  auto map_pub = nh.advertise<ss::OctomapMessage>("segmentation/octomap", 1, true);
+  ASSERT_TRUE(ros_test::spinUntil([&] { return cloud_pub.getNumSubscribers() > 0 && map_pub.getNumSubscribers() > 0; }, 30));
+  map_pub.publish(ros_test::octomapMessage(*scene().occupancy, "map"));
+  ros::WallDuration(0.5).sleep();
+  cloud_pub.publish(ros_test::cloudMessage(*scene().cloud, "map", ros::Time(2000, 0)));
+  ss::SegmentCloud::Request request;
+  request.timeout = 5.0;
+  const auto srv = call(request);
+  ASSERT_EQ(srv.response.status, Response::SUCCESS) << srv.response.message;
+  EXPECT_EQ(srv.response.objects.header.stamp, ros::Time(2000, 0));
+  EXPECT_EQ(srv.response.objects.header.frame_id, "map");
+  EXPECT_GE(srv.response.objects.objects.size(), 2u);
+  ASSERT_FALSE(srv.response.timing_stages.empty());
+  EXPECT_EQ(srv.response.timing_stages.back(), "total");
+  EXPECT_EQ(srv.response.timing_stages.size(), srv.response.timing_ms.size());
+  EXPECT_GT(srv.response.timing_ms.back(), 0.0);
+
+  // A region of interest around the first object keeps only objects inside it.
+  const auto& first = srv.response.objects.objects.at(0);
+  ss::SegmentCloud::Request roi_request;
+  roi_request.timeout = 1.0;
+  roi_request.use_roi = true;
+  const auto& c = first.bounding_box_pose.position;
+  const double r = 0.5 * std::max({first.bounding_box_size.x, first.bounding_box_size.y, first.bounding_box_size.z}) + 0.02;
+  roi_request.roi_min.x = c.x - r;
+  roi_request.roi_min.y = c.y - r;
+  roi_request.roi_min.z = c.z - r;
+  roi_request.roi_max.x = c.x + r;
+  roi_request.roi_max.y = c.y + r;
+  roi_request.roi_max.z = c.z + r;
+  const auto roi_srv = call(roi_request);
+  ASSERT_EQ(roi_srv.response.status, Response::SUCCESS) << roi_srv.response.message;
+  for (const auto& object : roi_srv.response.objects.objects) {
+    for (int index : object.indices) {
+      const auto& p = scene().cloud->points.at(index);
+      EXPECT_GE(p.x, c.x - r - 1e-4);
+      EXPECT_LE(p.x, c.x + r + 1e-4);
+    }
+  }
+}
+
+TEST(SegmentService, LiveThresholdChangeTakesEffect) {
+  // dynamic_reconfigure: s_occl 1.0 keeps no segment (the score must exceed it); back to the
+  // configured value, objects return. Uses the latest cloud and map of the previous test.
+  auto set_s_occl = [](double value) {
+    dynamic_reconfigure::Reconfigure reconfigure;
+    dynamic_reconfigure::DoubleParameter parameter;
+    parameter.name = "s_occl";
+    parameter.value = value;
+    reconfigure.request.config.doubles.push_back(parameter);
+    EXPECT_TRUE(ros::service::waitForService("segmentation/set_parameters", ros::Duration(10)));
+    EXPECT_TRUE(ros::service::call("segmentation/set_parameters", reconfigure));
+    for (const auto& applied : reconfigure.response.config.doubles) {
+      if (applied.name == "s_occl") return applied.value;
+    }
+    return -1.0;
+  };
+  EXPECT_DOUBLE_EQ(set_s_occl(1.0), 1.0);
+  ss::SegmentCloud::Request request;
+  request.timeout = 1.0;
+  auto srv = call(request);
+  ASSERT_EQ(srv.response.status, Response::SUCCESS) << srv.response.message;
+  EXPECT_TRUE(srv.response.objects.objects.empty()) << srv.response.objects.objects.size() << " objects";
+  EXPECT_DOUBLE_EQ(set_s_occl(0.99), 0.99);
+  srv = call(request);
+  ASSERT_EQ(srv.response.status, Response::SUCCESS) << srv.response.message;
+  EXPECT_GE(srv.response.objects.objects.size(), 2u);
+}
+
+TEST(SegmentService, BadOctomapIsLoggedAndIgnored) {
+  // A map of a tree type the node cannot use, and one with garbage data: both are rejected with
+  // a logged error; the node keeps the last good map and keeps serving.
+  ros::NodeHandle nh;
+  auto map_pub = nh.advertise<ss::OctomapMessage>("segmentation/octomap", 2);
+  ASSERT_TRUE(ros_test::spinUntil([&] { return map_pub.getNumSubscribers() > 0; }, 30));
+  ss::OctomapMessage unsupported = ros_test::octomapMessage(*scene().occupancy, "map");
+  unsupported.binary = false;
+  unsupported.id = "OcTreeStamped";
+  map_pub.publish(unsupported);
+  ss::OctomapMessage garbage = ros_test::octomapMessage(*scene().occupancy, "map");
+  garbage.id = "OcTree";  // binary, but the bytes are no tree
+  garbage.data.assign(100, 7);
+  map_pub.publish(garbage);
+  ros::WallDuration(0.5).sleep();
+  ss::SegmentCloud::Request request;
+  request.timeout = 1.0;
+  const auto srv = call(request);
+  ASSERT_EQ(srv.response.status, Response::SUCCESS) << srv.response.message;
+  EXPECT_GE(srv.response.objects.objects.size(), 2u);
+}
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "segmentation_service_test");
+  ros::NodeHandle keep_node_alive;  // the node shuts down when its last handle goes
+  return RUN_ALL_TESTS();
+}

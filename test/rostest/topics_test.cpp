@@ -1,0 +1,171 @@
+// rostest: a generated scene published as cloud + octomap_msgs/Octomap gives ~objects that match
+// the ground truth as well as the core library (what segment_scene runs) does on the same scene;
+// the labelled cloud and the markers are published too.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include <pcl/point_types.h>
+#include <tf2_ros/static_transform_broadcaster.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include "ros_test_support.h"
+#include "symmetry_segmentation/SegmentedObjectArray.h"
+#include "symmetry_segmentation/evaluation/segmentation_metric.h"
+#include "symmetry_segmentation/ros/cloud_conversion.h"
+#include "symmetry_segmentation/segmenter.h"
+
+namespace ss = symmetry_segmentation;
+
+namespace {
+
+ss::Metrics metricsOf(const ss::Scene& scene, const std::vector<std::vector<int>>& segments) {
+  return ss::computeMetrics(ss::countMatches(ss::computeOverlap(scene.labels, segments), 0.5));
+}
+
+}  // namespace
+
+TEST(SegmentationTopics, GeneratedSceneIsSegmentedLikeTheCoreDoes) {
+  ros::NodeHandle nh;
+  std::string config_file;
+  ASSERT_TRUE(ros::NodeHandle("~").getParam("config_file", config_file));
+  const ss::Scene scene = ros_test::clutterScene(1);
+  ASSERT_TRUE(scene.occupancy);
+  ASSERT_FALSE(scene.labels.empty());
+
+  ss::SegmentedObjectArray::ConstPtr objects;
+  sensor_msgs::PointCloud2::ConstPtr labelled;
+  visualization_msgs::MarkerArray::ConstPtr markers;
+  const ros::Time stamp(1000, 0);
+  auto objects_sub = nh.subscribe<ss::SegmentedObjectArray>(
+      "segmentation/objects", 1, [&](const ss::SegmentedObjectArray::ConstPtr& m) { if (m->header.stamp == stamp) objects = m; });
+  auto labelled_sub = nh.subscribe<sensor_msgs::PointCloud2>(
+      "segmentation/segmented_cloud", 1, [&](const sensor_msgs::PointCloud2::ConstPtr& m) { if (m->header.stamp == stamp) labelled = m; });
+  auto markers_sub = nh.subscribe<visualization_msgs::MarkerArray>(
+      "segmentation/symmetry_markers", 1, [&](const visualization_msgs::MarkerArray::ConstPtr& m) { markers = m; });
+  auto cloud_pub = nh.advertise<sensor_msgs::PointCloud2>("segmentation/input", 1);
+  auto map_pub = nh.advertise<ss::OctomapMessage>("segmentation/octomap", 1, true);  // latched, like octomap_server
+  ASSERT_TRUE(ros_test::spinUntil([&] { return cloud_pub.getNumSubscribers() > 0 && map_pub.getNumSubscribers() > 0; }, 30));
+  ASSERT_TRUE(ros_test::spinUntil([&] { return objects_sub.getNumPublishers() > 0; }, 30));
+  map_pub.publish(ros_test::octomapMessage(*scene.occupancy, "map"));
+  ros::WallDuration(0.5).sleep();  // the map is cached before the cloud arrives
+  cloud_pub.publish(ros_test::cloudMessage(*scene.cloud, "map", stamp));
+  ASSERT_TRUE(ros_test::spinUntil([&] { return objects && labelled && markers && markers->markers.size() > 1; }, 120))
+      << "no outputs for the published cloud";
+
+  // What segment_scene computes on the same scene directory with the same parameters (it also
+  // reads table_plane.txt, which a robot's cloud does not carry: allow a small difference).
+  const ss::SegmentationConfig config = ss::loadConfigFile(config_file);
+  const auto core = ss::makeSegmenter("symmetry", config)->segment(scene);
+  std::vector<std::vector<int>> core_segments, node_segments;
+  for (const auto& segment : core.segments) core_segments.push_back(segment.indices);
+  for (const auto& object : objects->objects) node_segments.emplace_back(object.indices.begin(), object.indices.end());
+  const ss::Metrics core_metrics = metricsOf(scene, core_segments);
+  const ss::Metrics node_metrics = metricsOf(scene, node_segments);
+  EXPECT_EQ(objects->header.frame_id, "map");
+  EXPECT_GT(node_metrics.recall, 0.3) << "too few ground-truth objects found";
+  EXPECT_GE(node_metrics.f, core_metrics.f - 0.02);
+  EXPECT_GE(node_metrics.mean_best_iou, core_metrics.mean_best_iou - 0.02);
+
+  // Given exactly what the node was given (no table plane), the core finds the same segments:
+  // the glue loses nothing.
+  ss::Scene without_plane = scene;
+  without_plane.table_plane.reset();
+  const auto same_input = ss::makeSegmenter("symmetry", config)->segment(without_plane);
+  ASSERT_EQ(objects->objects.size(), same_input.segments.size());
+  for (std::size_t i = 0; i < same_input.segments.size(); ++i) {
+    EXPECT_EQ(node_segments[i], same_input.segments[i].indices) << "segment " << i;
+  }
+  for (const auto& object : objects->objects) {
+    EXPECT_TRUE(object.has_symmetry_plane);
+    EXPECT_EQ(object.cloud.width * object.cloud.height, object.indices.size());
+    EXPECT_GT(object.bounding_box_size.x, 0.0);
+  }
+
+  // Labelled cloud: one label per object, in the processing frame.
+  EXPECT_EQ(labelled->header.frame_id, "map");
+  EXPECT_TRUE(ss::hasField(*labelled, "label"));
+  pcl::PointCloud<pcl::PointXYZRGBL> labelled_points;
+  pcl::fromROSMsg(*labelled, labelled_points);
+  std::set<uint32_t> labels;
+  for (const auto& p : labelled_points) labels.insert(p.label);
+  EXPECT_EQ(labels.size(), objects->objects.size() + 1);  // + 0 for unsegmented points
+
+  // Markers: DELETEALL first, then plane, arrow and text per object.
+  EXPECT_EQ(markers->markers.front().action, visualization_msgs::Marker::DELETEALL);
+  EXPECT_EQ(markers->markers.size(), 1 + 3 * objects->objects.size());
+}
+
+TEST(SegmentationTopics, CloudInAnotherFrameGoesThroughTf) {
+  // The cloud arrives in a camera frame; the map (already cached) is in "map", so processing
+  // happens in "map" once tf2 knows camera -> map: same segments, stamped with the cloud's stamp.
+  ros::NodeHandle nh;
+  const ss::Scene scene = ros_test::clutterScene(1);
+  const Eigen::Vector3f origin = scene.sensor_origins.at(0);
+  ss::SegmentedObjectArray::ConstPtr objects;
+  const ros::Time stamp(3000, 0);
+  auto objects_sub = nh.subscribe<ss::SegmentedObjectArray>(
+      "segmentation/objects", 1, [&](const ss::SegmentedObjectArray::ConstPtr& m) { if (m->header.stamp == stamp) objects = m; });
+  auto cloud_pub = nh.advertise<sensor_msgs::PointCloud2>("segmentation/input", 1);
+  ASSERT_TRUE(ros_test::spinUntil([&] { return cloud_pub.getNumSubscribers() > 0 && objects_sub.getNumPublishers() > 0; }, 30));
+  ss::Cloud in_camera = *scene.cloud;
+  for (auto& p : in_camera) {
+    p.x -= origin.x();
+    p.y -= origin.y();
+    p.z -= origin.z();
+  }
+  // First without the transform: dropped by the tf filter (a warning), nothing published.
+  cloud_pub.publish(ros_test::cloudMessage(in_camera, "camera", stamp));
+  EXPECT_FALSE(ros_test::spinUntil([&] { return objects != nullptr; }, 3.0)) << "segmented without a transform";
+
+  tf2_ros::StaticTransformBroadcaster broadcaster;
+  geometry_msgs::TransformStamped transform;
+  transform.header.stamp = ros::Time(0);
+  transform.header.frame_id = "map";
+  transform.child_frame_id = "camera";
+  transform.transform.translation.x = origin.x();
+  transform.transform.translation.y = origin.y();
+  transform.transform.translation.z = origin.z();
+  transform.transform.rotation.w = 1.0;
+  broadcaster.sendTransform(transform);
+  ros::WallDuration(0.5).sleep();
+  cloud_pub.publish(ros_test::cloudMessage(in_camera, "camera", stamp));
+  ASSERT_TRUE(ros_test::spinUntil([&] { return objects != nullptr; }, 60)) << "no objects for the camera-frame cloud";
+  EXPECT_EQ(objects->header.frame_id, "map");
+  EXPECT_GE(objects->objects.size(), 3u);
+  for (const auto& object : objects->objects) {
+    EXPECT_GT(object.bounding_box_pose.position.z, -0.05) << "boxes are in the map frame, on the table";
+  }
+}
+
+TEST(SegmentationTopics, StaleCloudsAreDroppedWhenBusy) {
+  // Ten clouds at once: the node never queues them all; the newest one is always segmented.
+  ros::NodeHandle nh;
+  const ss::Scene scene = ros_test::clutterScene(1);
+  std::vector<ros::Time> stamps;
+  auto objects_sub = nh.subscribe<ss::SegmentedObjectArray>(
+      "segmentation/objects", 10, [&](const ss::SegmentedObjectArray::ConstPtr& m) {
+        if (m->header.stamp.sec >= 4000) stamps.push_back(m->header.stamp);
+      });
+  auto cloud_pub = nh.advertise<sensor_msgs::PointCloud2>("segmentation/input", 10);
+  ASSERT_TRUE(ros_test::spinUntil([&] { return cloud_pub.getNumSubscribers() > 0 && objects_sub.getNumPublishers() > 0; }, 30));
+  const sensor_msgs::PointCloud2 message = ros_test::cloudMessage(*scene.cloud, "map", ros::Time(0));
+  for (int i = 0; i < 10; ++i) {
+    auto copy = boost::make_shared<sensor_msgs::PointCloud2>(message);
+    copy->header.stamp = ros::Time(4000 + i, 0);
+    cloud_pub.publish(copy);
+    ros::WallDuration(0.02).sleep();
+  }
+  ASSERT_TRUE(ros_test::spinUntil([&] { return !stamps.empty() && stamps.back() == ros::Time(4009, 0); }, 60))
+      << "the newest cloud was not segmented";
+  ros_test::spinUntil([] { return false; }, 2.0);  // anything still queued would arrive now
+  EXPECT_LT(stamps.size(), 10u) << "every cloud was segmented: nothing was dropped";
+  EXPECT_EQ(stamps.back(), ros::Time(4009, 0));
+}
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "segmentation_topics_test");
+  ros::NodeHandle keep_node_alive;  // the node shuts down when its last handle goes
+  return RUN_ALL_TESTS();
+}
