@@ -53,8 +53,9 @@ TEST(SegmentationTopics, GeneratedSceneIsSegmentedLikeTheCoreDoes) {
   ASSERT_TRUE(ros_test::spinUntil([&] { return objects && labelled && markers && markers->markers.size() > 1; }, 120))
       << "no outputs for the published cloud";
 
-  // What segment_scene computes on the same scene directory with the same parameters (it also
-  // reads table_plane.txt, which a robot's cloud does not carry: allow a small difference).
+  // What segment_scene computes on the same scene directory with the same parameters. It also
+  // reads table_plane.txt, which a robot's cloud does not carry; the node estimates the table,
+  // and a borderline object may go either way with the estimate: allow one object.
   const ss::SegmentationConfig config = ss::loadConfigFile(config_file);
   const auto core = ss::makeSegmenter("symmetry", config)->segment(scene);
   std::vector<std::vector<int>> core_segments, node_segments;
@@ -64,8 +65,10 @@ TEST(SegmentationTopics, GeneratedSceneIsSegmentedLikeTheCoreDoes) {
   const ss::Metrics node_metrics = metricsOf(scene, node_segments);
   EXPECT_EQ(objects->header.frame_id, "map");
   EXPECT_GT(node_metrics.recall, 0.3) << "too few ground-truth objects found";
-  EXPECT_GE(node_metrics.f, core_metrics.f - 0.02);
-  EXPECT_GE(node_metrics.mean_best_iou, core_metrics.mean_best_iou - 0.02);
+  const std::set<int> labels(scene.labels.begin(), scene.labels.end());
+  const double one_object = 1.0 / static_cast<double>(labels.size() - labels.count(0));
+  EXPECT_GE(node_metrics.recall, core_metrics.recall - one_object - 1e-9);
+  EXPECT_GE(node_metrics.mean_best_iou, core_metrics.mean_best_iou - one_object);
 
   // Given exactly what the node was given (no table plane), the core finds the same segments:
   // the glue loses nothing.
