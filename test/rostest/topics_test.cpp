@@ -65,8 +65,8 @@ TEST(SegmentationTopics, GeneratedSceneIsSegmentedLikeTheCoreDoes) {
   const ss::Metrics node_metrics = metricsOf(scene, node_segments);
   EXPECT_EQ(objects->header.frame_id, "map");
   EXPECT_GT(node_metrics.recall, 0.3) << "too few ground-truth objects found";
-  const std::set<int> labels(scene.labels.begin(), scene.labels.end());
-  const double one_object = 1.0 / static_cast<double>(labels.size() - labels.count(0));
+  const std::set<int> truth_labels(scene.labels.begin(), scene.labels.end());
+  const double one_object = 1.0 / static_cast<double>(truth_labels.size() - truth_labels.count(0));
   EXPECT_GE(node_metrics.recall, core_metrics.recall - one_object - 1e-9);
   EXPECT_GE(node_metrics.mean_best_iou, core_metrics.mean_best_iou - one_object);
 
