@@ -51,11 +51,11 @@ Options parse(int argc, char** argv) {
     } else if (arg == "--output" || arg == "-o") {
       options.output = arguments.value();
     } else if (arg == "--clouds") {
-      options.clouds = std::stoi(arguments.value());
+      options.clouds = arguments.intValue(1, 100000);
     } else if (arg == "--rate") {
-      options.rate = std::stod(arguments.value());
+      options.rate = arguments.numberValue();
     } else if (arg == "--voxel") {
-      options.voxel = std::stod(arguments.value());
+      options.voxel = arguments.numberValue();
     } else if (arg == "--frame") {
       options.frame = arguments.value();
     } else if (arg == "--camera-frame") {
@@ -76,7 +76,6 @@ Options parse(int argc, char** argv) {
   }
   if (options.scene.empty()) arguments.usageError("missing <scene>");
   if (options.output.empty()) arguments.usageError("missing --output FILE.bag");
-  if (options.clouds < 1) arguments.usageError("--clouds must be at least 1");
   if (!(options.rate > 0.0)) arguments.usageError("--rate must be positive");
   if (options.voxel < 0.0) arguments.usageError("--voxel must not be negative");
   return options;

@@ -44,12 +44,7 @@ Options parse(int argc, char** argv) {
                 << ss::defaultMethod() << "; the euclidean and lccp baselines run too unless --no-baselines.\n";
       std::exit(0);
     } else if (arg == "--runs") {
-      try {
-        options.runs = std::stoi(arguments.value());
-      } catch (...) {
-        arguments.usageError("--runs needs a positive integer");
-      }
-      if (options.runs < 1 || options.runs > 1000) arguments.usageError("--runs must be in [1, 1000]");
+      options.runs = arguments.intValue(1, 1000);
     } else if (arg == "--method") {
       options.methods.push_back(arguments.value());
     } else if (arg == "--config") {

@@ -55,10 +55,7 @@ Options parse(int argc, char** argv) {
     } else if (arg == "--config") {
       options.config = arguments.value();
     } else if (arg == "--set") {
-      const std::string assignment = arguments.value();
-      const auto eq = assignment.find('=');
-      if (eq == std::string::npos || eq == 0) arguments.usageError("--set expects section.key=value, got '" + assignment + "'");
-      options.overrides.emplace_back(assignment.substr(0, eq), assignment.substr(eq + 1));
+      options.overrides.push_back(arguments.assignmentValue());
     } else if (arg == "--no-png") {
       options.png = false;
     } else if (!arg.empty() && arg[0] == '-') {

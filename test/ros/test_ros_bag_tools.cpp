@@ -108,3 +108,17 @@ TEST(BagTools, SegmentBagFailsClearlyOnAMissingFile) {
   EXPECT_EQ(run(std::string(TOOLS_DIR) + "/segment_bag /nonexistent.bag --output /tmp/never.bag", &output), 1);
   EXPECT_NE(output.find("segment_bag: error:"), std::string::npos) << output;
 }
+
+// Malformed numbers once aborted scene_to_bag (an uncaught std::stoi exception).
+TEST(BagTools, BadNumbersAreUsageErrors) {
+  const std::string scene = std::string(SOURCE_DIR) + "/data/default_scene";
+  for (const char* option : {"--clouds abc", "--clouds 0", "--rate 1e999", "--rate", "--voxel 1cm"}) {
+    std::string output;
+    EXPECT_EQ(run(std::string(TOOLS_DIR) + "/scene_to_bag " + scene + " --output /tmp/never.bag " + option, &output), 2)
+        << option;
+    EXPECT_NE(output.find("scene_to_bag: "), std::string::npos) << output;
+  }
+  std::string output;
+  EXPECT_EQ(run(std::string(TOOLS_DIR) + "/segment_bag in.bag --output out.bag --set nokey", &output), 2);
+  EXPECT_NE(output.find("--set expects section.key=value"), std::string::npos) << output;
+}
