@@ -8,6 +8,7 @@
 #include <pcl_conversions/pcl_conversions.h>
 
 #include "symmetry_segmentation/errors.h"
+#include "symmetry_segmentation/point_validity.h"
 
 namespace symmetry_segmentation {
 
@@ -51,7 +52,7 @@ Scene sceneFromCloudMessage(const sensor_msgs::PointCloud2& message) {
 std::size_t countFinitePoints(const Cloud& cloud) {
   std::size_t count = 0;
   for (const auto& p : cloud.points) {
-    if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) ++count;
+    if (isUsablePoint(p)) ++count;
   }
   return count;
 }

@@ -7,21 +7,17 @@
 #include <pcl/common/io.h>
 #include <pcl_conversions/pcl_conversions.h>
 
+#include "symmetry_segmentation/point_validity.h"
 #include "symmetry_segmentation/segmentation_output.h"
 
 namespace symmetry_segmentation {
-namespace {
-
-bool finite(const PointT& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
-
-}  // namespace
 
 OrientedBox orientedBoundingBox(const Cloud& cloud, const std::vector<int>& indices) {
   OrientedBox box;
   std::vector<Eigen::Vector3f> points;
   points.reserve(indices.size());
   for (int index : indices) {
-    if (index < 0 || static_cast<std::size_t>(index) >= cloud.size() || !finite(cloud[index])) continue;
+    if (index < 0 || static_cast<std::size_t>(index) >= cloud.size() || !isUsablePoint(cloud[index])) continue;
     points.push_back(cloud[index].getVector3fMap());
   }
   if (points.empty()) return box;
@@ -101,7 +97,7 @@ sensor_msgs::PointCloud2 labelledCloudMessage(const Cloud& cloud, const Segmenta
   pcl::PointCloud<pcl::PointXYZRGBL> labelled;
   labelled.reserve(cloud.size());
   for (std::size_t i = 0; i < cloud.size(); ++i) {
-    if (!finite(cloud[i])) continue;
+    if (!isUsablePoint(cloud[i])) continue;
     pcl::PointXYZRGBL point;
     point.x = cloud[i].x;
     point.y = cloud[i].y;

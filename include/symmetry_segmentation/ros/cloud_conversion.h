@@ -19,7 +19,7 @@ bool hasField(const sensor_msgs::PointCloud2& message, const std::string& name);
 /// points, no x/y/z fields, or a data size that does not match its layout.
 Scene sceneFromCloudMessage(const sensor_msgs::PointCloud2& message);
 
-/// Points with finite x, y and z.
+/// Points the pipeline can use (isUsablePoint: finite, within 100 km).
 std::size_t countFinitePoints(const Cloud& cloud);
 
 /// Applies a rigid transform to points (and normals when `with_normals`).
