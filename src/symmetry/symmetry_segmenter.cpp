@@ -1,16 +1,19 @@
 #include "symmetry_segmentation/symmetry/symmetry_segmenter.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "symmetry_segmentation/occupancy.h"
 #include "symmetry_segmentation/parallel_for.h"
 #include "symmetry_segmentation/preprocessing.h"
 #include "symmetry_segmentation/segment_order.h"
 #include "symmetry_segmentation/stopwatch.h"
+#include "symmetry_segmentation/symmetry/composite_segments.h"
 #include "symmetry_segmentation/symmetry/nested_segments.h"
 #include "symmetry_segmentation/symmetry/normal_edge_curves.h"
 #include "symmetry_segmentation/symmetry/plane_refinement.h"
 #include "symmetry_segmentation/symmetry/segment_filter.h"
+#include "symmetry_segmentation/symmetry/smoothness_weight.h"
 #include "symmetry_segmentation/symmetry/symmetric_graph_cut.h"
 #include "symmetry_segmentation/symmetry/symmetry_hypotheses.h"
 #include "symmetry_segmentation/symmetry/upright_hypotheses.h"
@@ -95,6 +98,24 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
     if (passesFilter(candidate, params_.filter)) passing.push_back(std::move(candidate));
   }
   const std::size_t passed_filter = passing.size();
+  // Two objects one plane mirrors together, each also found alone (composite_segments.h).
+  std::size_t split_composites = 0;
+  if (params_.filter.seam_crease_angle_deg > 0.0f) {
+    const float min_crease_cos = std::cos(params_.filter.seam_crease_angle_deg * static_cast<float>(M_PI) / 180.0f);
+    const CreaseTest crease = [&cloud, min_crease_cos](int a, int b) {
+      const auto& p = cloud[a];
+      const auto& q = cloud[b];
+      const Eigen::Vector3f n_p = p.getNormalVector3fMap();
+      const Eigen::Vector3f n_q = q.getNormalVector3fMap();
+      return n_p.dot(n_q) < min_crease_cos && !isConvexLink(p.getVector3fMap(), n_p, q.getVector3fMap(), n_q);
+    };
+    const std::vector<CandidateSegment> parts = passing;
+    const ReflectionMatch match = [&graph](int index, const SymmetryPlane& plane) {
+      const ReflectionEvidence evidence = graph.dataTerm(index, plane);
+      return evidence.landing == ReflectionLanding::OnPoint ? evidence.match : -1;
+    };
+    split_composites = splitCompositeSegments(passing, parts, graph.neighbours(), crease, match);
+  }
   // Take objects the cut glued onto another object's segment back out of it (nested_segments.h).
   const ReflectionExplained explained = [&graph](int index, const SymmetryPlane& plane) {
     const ReflectionEvidence evidence = graph.dataTerm(index, plane);
@@ -127,6 +148,7 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
                    {"graph_cuts", hypotheses.size() + std::count(cut_again.begin(), cut_again.end(), 1)},
                    {"segments_before_filtering", non_empty},
                    {"segments_after_filtering", passed_filter},
+                   {"composite_segments_split", split_composites},
                    {"segments_after_deduplication", result.segments.size()}};
   return result;
 }

@@ -56,6 +56,9 @@ struct SymmetryFilterParams {
   int min_segment_points = 40;          ///< In working-cloud points (1 cm voxels).
   float duplicate_overlap = 0.7f;       ///< Intersection over the smaller segment above which two
                                         ///< segments are the same object.
+  float seam_crease_angle_deg = 30.0f;  ///< Concave links whose normals differ by more are creases
+                                        ///< where two objects may meet (composite_segments.h);
+                                        ///< 0 keeps composite segments whole.
 };
 
 struct SymmetryParams {

@@ -1,0 +1,47 @@
+#pragma once
+// Stage 5c (our addition): a segment that is two objects meeting at a concave seam.
+//
+// One plane can be a symmetry of two objects at once: a bowl centred on a box, a can pushed
+// against the middle of a box's end face. Its cut takes both, scores as well as either object
+// alone, and, being larger, would win deduplication. When each object is also found on its own
+// (two nearly disjoint segments that together make up the larger one) and the two meet along a
+// concave crease - where separate objects touch - rather than along a smooth or convex edge
+// (a box's two halves, a bowl's rim), and the larger segment's plane mirrors each part onto
+// itself - two objects that happen to share a plane - rather than one part onto the other (the
+// two arms of a U-shaped object, the halves of a box seen around an occluder), the larger
+// segment is replaced by the two.
+// Objects that meet flush on one flat face (a box on a box of the same footprint) show no crease
+// and stay merged: nothing in the geometry tells them from one taller box. The converse also
+// holds: an L-shaped block is, to the geometry, a board standing flush on a slab, and is split.
+#include <functional>
+#include <vector>
+
+#include "symmetry_segmentation/symmetry/segment_filter.h"
+
+namespace symmetry_segmentation {
+
+/// Whether the working-cloud link (a, b) crosses a concave crease.
+using CreaseTest = std::function<bool(int a, int b)>;
+/// The working-cloud point that point `index` reflects onto about `plane`, or -1 if none.
+using ReflectionMatch = std::function<int(int index, const SymmetryPlane& plane)>;
+
+struct CompositeSegmentParams {
+  float min_nested_fraction = 0.8f;  ///< Share of each part inside the composite.
+  float min_part_fraction = 0.2f;    ///< Each part has at least this share of the composite's size.
+  float max_part_overlap = 0.1f;     ///< Parts share at most this share of the smaller part.
+  float min_coverage = 0.85f;        ///< The two parts cover at least this share of the composite.
+  float min_crease_fraction = 0.5f;  ///< Share of the links between the parts that cross a crease.
+  int min_seam_links = 5;            ///< The parts must touch along at least this many links.
+  float max_swapped_fraction = 0.3f; ///< Share of a part's matched reflections (about the larger
+                                     ///< segment's plane) landing on the other part, above which
+                                     ///< the parts are mirror halves of one object.
+};
+
+/// Replaces every segment of `segments` that is the union of two segments of `parts` meeting at
+/// a concave seam by those two parts (each added once, after the remaining segments).
+/// `neighbours[i]`: the working-cloud points linked to point i. Returns how many were replaced.
+std::size_t splitCompositeSegments(std::vector<CandidateSegment>& segments, const std::vector<CandidateSegment>& parts,
+                                   const std::vector<std::vector<int>>& neighbours, const CreaseTest& crease,
+                                   const ReflectionMatch& match, const CompositeSegmentParams& params = {});
+
+}  // namespace symmetry_segmentation

@@ -1,0 +1,120 @@
+// Stage 5c: a segment made of two objects meeting at a concave seam is replaced by the two.
+#include <gtest/gtest.h>
+
+#include <numeric>
+
+#include "symmetry_segmentation/symmetry/composite_segments.h"
+
+namespace ss = symmetry_segmentation;
+
+namespace {
+
+// Points 0..99 on a line, each linked to its two neighbours. Object A is 0..59, object B 60..99:
+// their seam is the link (59, 60).
+constexpr int kPoints = 100;
+constexpr int kSeam = 60;
+
+std::vector<std::vector<int>> chainNeighbours() {
+  std::vector<std::vector<int>> neighbours(kPoints);
+  for (int i = 0; i < kPoints; ++i) {
+    if (i > 0) neighbours[i].push_back(i - 1);
+    if (i + 1 < kPoints) neighbours[i].push_back(i + 1);
+  }
+  return neighbours;
+}
+
+ss::CandidateSegment segment(int first, int last, float plane_id = 0.0f) {
+  ss::CandidateSegment s;
+  s.points.resize(last - first + 1);
+  std::iota(s.points.begin(), s.points.end(), first);
+  s.plane.normal = Eigen::Vector3f::UnitX();
+  s.plane.distance = plane_id;
+  return s;
+}
+
+bool creaseAtSeam(int a, int b) { return std::min(a, b) == kSeam - 1 && std::max(a, b) == kSeam; }
+bool noCrease(int, int) { return false; }
+
+// Each point reflects onto a point of its own object (the plane is a symmetry of each).
+int mirrorWithinObject(int index, const ss::SymmetryPlane&) {
+  return index < kSeam ? (kSeam - 1 - index) : (kSeam + kPoints - 1 - index);
+}
+// One object's reflection lands on the other (mirror halves of one object).
+int mirrorAcrossSeam(int index, const ss::SymmetryPlane&) {
+  const int mirrored = kPoints - 1 - index;
+  return mirrored;
+}
+
+}  // namespace
+
+TEST(CompositeSegments, TwoObjectsMeetingAtACreaseReplaceTheirUnion) {
+  std::vector<ss::CandidateSegment> segments = {segment(0, 99, 1.0f), segment(0, 59, 2.0f)};
+  const std::vector<ss::CandidateSegment> parts = {segment(0, 99, 1.0f), segment(0, 59, 2.0f), segment(60, 99, 3.0f)};
+  ss::CompositeSegmentParams params;
+  params.min_seam_links = 1;
+  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, chainNeighbours(), creaseAtSeam, mirrorWithinObject, params), 1u);
+  ASSERT_EQ(segments.size(), 2u) << "the union is gone; A, already present, is not added twice";
+  EXPECT_EQ(segments[0].points, segment(0, 59).points);
+  EXPECT_EQ(segments[1].points, segment(60, 99).points);
+  EXPECT_EQ(segments[1].plane.distance, 3.0f) << "each part keeps its own plane";
+}
+
+TEST(CompositeSegments, AFlatOrConvexSeamKeepsTheSegmentWhole) {
+  std::vector<ss::CandidateSegment> segments = {segment(0, 99)};
+  const std::vector<ss::CandidateSegment> parts = {segment(0, 59), segment(60, 99)};
+  ss::CompositeSegmentParams params;
+  params.min_seam_links = 1;
+  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, chainNeighbours(), noCrease, mirrorWithinObject, params), 0u);
+  ASSERT_EQ(segments.size(), 1u);
+  EXPECT_EQ(segments[0].points.size(), 100u);
+}
+
+TEST(CompositeSegments, MirrorHalvesOfOneObjectStayTogether) {
+  // 50/50 so that the halves map onto each other exactly.
+  std::vector<ss::CandidateSegment> segments = {segment(0, 99)};
+  const std::vector<ss::CandidateSegment> parts = {segment(0, 49), segment(50, 99)};
+  const auto creaseInMiddle = [](int a, int b) { return std::min(a, b) == 49 && std::max(a, b) == 50; };
+  ss::CompositeSegmentParams params;
+  params.min_seam_links = 1;
+  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, chainNeighbours(), creaseInMiddle, mirrorAcrossSeam, params), 0u);
+  EXPECT_EQ(segments.size(), 1u);
+  // The same parts under a plane that maps each onto itself are two objects.
+  const auto mirrorWithinHalves = [](int index, const ss::SymmetryPlane&) { return index < 50 ? 49 - index : 149 - index; };
+  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, chainNeighbours(), creaseInMiddle, mirrorWithinHalves, params), 1u);
+  EXPECT_EQ(segments.size(), 2u);
+}
+
+TEST(CompositeSegments, PartsMustCoverTheSegmentTouchAndBeSubstantial) {
+  ss::CompositeSegmentParams params;
+  params.min_seam_links = 1;
+  // Together only 70 of 100 points: a third object (or more) is in the segment.
+  std::vector<ss::CandidateSegment> uncovered = {segment(0, 99)};
+  EXPECT_EQ(ss::splitCompositeSegments(uncovered, {segment(0, 34), segment(60, 94)}, chainNeighbours(), creaseAtSeam,
+                                       mirrorWithinObject, params),
+            0u);
+  // A sliver (10 of 100 points) is a detail of the object, not a second object.
+  std::vector<ss::CandidateSegment> sliver = {segment(0, 99)};
+  const auto creaseAt90 = [](int a, int b) { return std::min(a, b) == 89 && std::max(a, b) == 90; };
+  EXPECT_EQ(ss::splitCompositeSegments(sliver, {segment(0, 89), segment(90, 99)}, chainNeighbours(), creaseAt90,
+                                       mirrorWithinObject, params),
+            0u);
+  // Parts that do not touch (no link between them) are not a seam.
+  std::vector<ss::CandidateSegment> apart = {segment(0, 99)};
+  EXPECT_EQ(ss::splitCompositeSegments(apart, {segment(0, 49), segment(52, 99)}, chainNeighbours(), creaseAtSeam,
+                                       mirrorWithinObject, params),
+            0u);
+  // Largely overlapping parts are the same object found twice.
+  std::vector<ss::CandidateSegment> overlapping = {segment(0, 99)};
+  EXPECT_EQ(ss::splitCompositeSegments(overlapping, {segment(0, 69), segment(40, 99)}, chainNeighbours(), creaseAtSeam,
+                                       mirrorWithinObject, params),
+            0u);
+  EXPECT_EQ(overlapping.size(), 1u);
+}
+
+TEST(CompositeSegments, AShortSeamIsNotContact) {
+  // One crease link, five required by default.
+  std::vector<ss::CandidateSegment> segments = {segment(0, 99)};
+  EXPECT_EQ(ss::splitCompositeSegments(segments, {segment(0, 59), segment(60, 99)}, chainNeighbours(), creaseAtSeam,
+                                       mirrorWithinObject),
+            0u);
+}
