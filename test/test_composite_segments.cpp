@@ -32,6 +32,13 @@ ss::CandidateSegment segment(int first, int last, float plane_id = 0.0f) {
   return s;
 }
 
+// Scores a rest segment gets: occlusion 0.5 marks them.
+ss::SegmentScores markedScores(const std::vector<int>&, const ss::SymmetryPlane&) {
+  ss::SegmentScores scores;
+  scores.occlusion = 0.5f;
+  return scores;
+}
+
 bool creaseAtSeam(int a, int b) { return std::min(a, b) == kSeam - 1 && std::max(a, b) == kSeam; }
 bool noCrease(int, int) { return false; }
 
@@ -52,7 +59,7 @@ TEST(CompositeSegments, TwoObjectsMeetingAtACreaseReplaceTheirUnion) {
   const std::vector<ss::CandidateSegment> parts = {segment(0, 99, 1.0f), segment(0, 59, 2.0f), segment(60, 99, 3.0f)};
   ss::CompositeSegmentParams params;
   params.min_seam_links = 1;
-  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, chainNeighbours(), creaseAtSeam, mirrorWithinObject, params), 1u);
+  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, chainNeighbours(), creaseAtSeam, mirrorWithinObject, markedScores, params), 1u);
   ASSERT_EQ(segments.size(), 2u) << "the union is gone; A, already present, is not added twice";
   EXPECT_EQ(segments[0].points, segment(0, 59).points);
   EXPECT_EQ(segments[1].points, segment(60, 99).points);
@@ -64,7 +71,7 @@ TEST(CompositeSegments, AFlatOrConvexSeamKeepsTheSegmentWhole) {
   const std::vector<ss::CandidateSegment> parts = {segment(0, 59), segment(60, 99)};
   ss::CompositeSegmentParams params;
   params.min_seam_links = 1;
-  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, chainNeighbours(), noCrease, mirrorWithinObject, params), 0u);
+  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, chainNeighbours(), noCrease, mirrorWithinObject, markedScores, params), 0u);
   ASSERT_EQ(segments.size(), 1u);
   EXPECT_EQ(segments[0].points.size(), 100u);
 }
@@ -76,45 +83,63 @@ TEST(CompositeSegments, MirrorHalvesOfOneObjectStayTogether) {
   const auto creaseInMiddle = [](int a, int b) { return std::min(a, b) == 49 && std::max(a, b) == 50; };
   ss::CompositeSegmentParams params;
   params.min_seam_links = 1;
-  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, chainNeighbours(), creaseInMiddle, mirrorAcrossSeam, params), 0u);
+  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, chainNeighbours(), creaseInMiddle, mirrorAcrossSeam, markedScores, params), 0u);
   EXPECT_EQ(segments.size(), 1u);
   // The same parts under a plane that maps each onto itself are two objects.
   const auto mirrorWithinHalves = [](int index, const ss::SymmetryPlane&) { return index < 50 ? 49 - index : 149 - index; };
-  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, chainNeighbours(), creaseInMiddle, mirrorWithinHalves, params), 1u);
+  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, chainNeighbours(), creaseInMiddle, mirrorWithinHalves, markedScores, params), 1u);
   EXPECT_EQ(segments.size(), 2u);
 }
 
-TEST(CompositeSegments, PartsMustCoverTheSegmentTouchAndBeSubstantial) {
+TEST(CompositeSegments, PartsMustCoverTheSegmentAndBeSubstantial) {
   ss::CompositeSegmentParams params;
   params.min_seam_links = 1;
   // Together only 70 of 100 points: a third object (or more) is in the segment.
   std::vector<ss::CandidateSegment> uncovered = {segment(0, 99)};
   EXPECT_EQ(ss::splitCompositeSegments(uncovered, {segment(0, 34), segment(60, 94)}, chainNeighbours(), creaseAtSeam,
-                                       mirrorWithinObject, params),
+                                       mirrorWithinObject, markedScores, params),
             0u);
   // A sliver (10 of 100 points) is a detail of the object, not a second object.
   std::vector<ss::CandidateSegment> sliver = {segment(0, 99)};
   const auto creaseAt90 = [](int a, int b) { return std::min(a, b) == 89 && std::max(a, b) == 90; };
   EXPECT_EQ(ss::splitCompositeSegments(sliver, {segment(0, 89), segment(90, 99)}, chainNeighbours(), creaseAt90,
-                                       mirrorWithinObject, params),
-            0u);
-  // Parts that do not touch (no link between them) are not a seam.
-  std::vector<ss::CandidateSegment> apart = {segment(0, 99)};
-  EXPECT_EQ(ss::splitCompositeSegments(apart, {segment(0, 49), segment(52, 99)}, chainNeighbours(), creaseAtSeam,
-                                       mirrorWithinObject, params),
+                                       mirrorWithinObject, markedScores, params),
             0u);
   // Largely overlapping parts are the same object found twice.
   std::vector<ss::CandidateSegment> overlapping = {segment(0, 99)};
   EXPECT_EQ(ss::splitCompositeSegments(overlapping, {segment(0, 69), segment(40, 99)}, chainNeighbours(), creaseAtSeam,
-                                       mirrorWithinObject, params),
+                                       mirrorWithinObject, markedScores, params),
             0u);
   EXPECT_EQ(overlapping.size(), 1u);
 }
 
-TEST(CompositeSegments, AShortSeamIsNotContact) {
-  // One crease link, five required by default.
+TEST(CompositeSegments, PartsThatDoNotTouchAreTwoObjects) {
+  // Linked by one link only (five make a seam by default), and that link is not creased.
   std::vector<ss::CandidateSegment> segments = {segment(0, 99)};
-  EXPECT_EQ(ss::splitCompositeSegments(segments, {segment(0, 59), segment(60, 99)}, chainNeighbours(), creaseAtSeam,
-                                       mirrorWithinObject),
+  EXPECT_EQ(ss::splitCompositeSegments(segments, {segment(0, 59), segment(60, 99)}, chainNeighbours(), noCrease,
+                                       mirrorWithinObject, markedScores),
+            1u);
+  EXPECT_EQ(segments.size(), 2u);
+}
+
+TEST(CompositeSegments, TheRestOfOneObjectFoundAloneIsTheOtherWhenApart) {
+  // Only A (0..59) is found alone; the rest (60..99) is hardly linked to it.
+  std::vector<ss::CandidateSegment> segments = {segment(0, 99, 1.0f)};
+  EXPECT_EQ(ss::splitCompositeSegments(segments, {segment(0, 59, 2.0f)}, chainNeighbours(), noCrease,
+                                       mirrorWithinObject, markedScores),
+            1u);
+  ASSERT_EQ(segments.size(), 2u);
+  EXPECT_EQ(segments[0].points, segment(0, 59).points);
+  EXPECT_EQ(segments[1].points, segment(60, 99).points);
+  EXPECT_EQ(segments[1].plane.distance, 1.0f) << "the rest keeps the larger segment's plane";
+  EXPECT_EQ(segments[1].scores.occlusion, 0.5f) << "and is scored for it";
+
+  // Meeting A at a crease, a rest not found alone may be part of A's object: kept whole.
+  ss::CompositeSegmentParams params;
+  params.min_seam_links = 1;
+  std::vector<ss::CandidateSegment> creased = {segment(0, 99, 1.0f)};
+  EXPECT_EQ(ss::splitCompositeSegments(creased, {segment(0, 59, 2.0f)}, chainNeighbours(), creaseAtSeam,
+                                       mirrorWithinObject, markedScores, params),
             0u);
+  EXPECT_EQ(creased.size(), 1u);
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <iterator>
 #include <optional>
+#include <utility>
 
 namespace symmetry_segmentation {
 namespace {
@@ -30,8 +31,11 @@ bool contains(const std::vector<int>& sorted, int value) {
   return std::binary_search(sorted.begin(), sorted.end(), value);
 }
 
-/// Whether parts a and b touch along a seam most of whose links cross a crease.
-bool meetAtConcaveSeam(const std::vector<int>& a, const std::vector<int>& b,
+enum class Contact { Apart, Creased, Smooth };
+
+/// How parts a and b meet: hardly linked, at a seam most of whose links cross a crease, or
+/// smoothly.
+Contact contactBetween(const std::vector<int>& a, const std::vector<int>& b,
                        const std::vector<std::vector<int>>& neighbours, const CreaseTest& crease,
                        const CompositeSegmentParams& params) {
   int links = 0;
@@ -44,7 +48,8 @@ bool meetAtConcaveSeam(const std::vector<int>& a, const std::vector<int>& b,
       creased += crease(p, q) ? 1 : 0;
     }
   }
-  return links >= params.min_seam_links && creased >= params.min_crease_fraction * links;
+  if (links < params.min_seam_links) return Contact::Apart;
+  return creased >= params.min_crease_fraction * links ? Contact::Creased : Contact::Smooth;
 }
 
 /// Whether `plane` mirrors more than the allowed share of `part`'s matched points onto `other`.
@@ -62,27 +67,45 @@ bool mirroredOntoOther(const std::vector<int>& part, const std::vector<int>& oth
   return matched > 0 && swapped > params.max_swapped_fraction * matched;
 }
 
-struct PartPair {
-  std::size_t first = 0;
-  std::size_t second = 0;
-  std::size_t covered = 0;
-};
+std::vector<int> difference(const std::vector<int>& a, const std::vector<int>& b) {
+  std::vector<int> rest;
+  std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(rest));
+  return rest;
+}
 
-std::optional<PartPair> findSplit(const CandidateSegment& whole, const std::vector<CandidateSegment>& parts,
-                                  const std::vector<std::vector<int>>& neighbours, const CreaseTest& crease,
-                                  const ReflectionMatch& match, const CompositeSegmentParams& params) {
+/// Whether parts a and b of `whole` are two objects: apart (or, if `creased_counts`, meeting at a
+/// concave seam), each mirrored onto itself by `whole`'s plane.
+bool twoObjects(const CandidateSegment& whole, const std::vector<int>& a, const std::vector<int>& b,
+                bool creased_counts, const std::vector<std::vector<int>>& neighbours, const CreaseTest& crease,
+                const ReflectionMatch& match, const CompositeSegmentParams& params) {
+  const Contact contact = contactBetween(a, b, neighbours, crease, params);
+  if (contact == Contact::Smooth || (contact == Contact::Creased && !creased_counts)) return false;
+  return !mirroredOntoOther(a, b, whole.plane, match, params) && !mirroredOntoOther(b, a, whole.plane, match, params);
+}
+
+/// The two objects `whole` is made of: two segments of `parts` covering it, else one segment of
+/// `parts` and the rest of `whole` (which keeps `whole`'s plane).
+std::optional<std::pair<CandidateSegment, CandidateSegment>> findSplit(
+    const CandidateSegment& whole, const std::vector<CandidateSegment>& parts,
+    const std::vector<std::vector<int>>& neighbours, const CreaseTest& crease, const ReflectionMatch& match,
+    const SegmentScorer& score, const CompositeSegmentParams& params) {
   const double size = static_cast<double>(whole.points.size());
   std::vector<std::size_t> nested;
   std::vector<std::size_t> inside;  // per nested part: its points within `whole`
   for (std::size_t i = 0; i < parts.size(); ++i) {
     const auto& part = parts[i].points;
-    if (part.empty() || part.size() < params.min_part_fraction * size || part.size() >= whole.points.size()) continue;
+    if (part.empty() || part.size() < params.min_part_fraction * size ||
+        part.size() > params.max_part_fraction * size) {
+      continue;
+    }
     const std::size_t common = intersectionSize(part, whole.points);
     if (common < params.min_nested_fraction * part.size()) continue;
     nested.push_back(i);
     inside.push_back(common);
   }
-  std::optional<PartPair> best;
+  // Both objects found alone: the pair covering most of `whole`.
+  std::optional<std::pair<std::size_t, std::size_t>> best_pair;
+  std::size_t best_covered = 0;
   for (std::size_t x = 0; x < nested.size(); ++x) {
     for (std::size_t y = x + 1; y < nested.size(); ++y) {
       const auto& a = parts[nested[x]].points;
@@ -91,14 +114,34 @@ std::optional<PartPair> findSplit(const CandidateSegment& whole, const std::vect
       if (shared > params.max_part_overlap * std::min(a.size(), b.size())) continue;
       // Points of `whole` in either part (the shared ones counted once, bounded by `shared`).
       const std::size_t covered = inside[x] + inside[y] - std::min(shared, std::min(inside[x], inside[y]));
-      if (covered < params.min_coverage * size) continue;
-      if (best && covered <= best->covered) continue;
-      if (!meetAtConcaveSeam(a, b, neighbours, crease, params)) continue;
-      if (mirroredOntoOther(a, b, whole.plane, match, params) || mirroredOntoOther(b, a, whole.plane, match, params)) continue;
-      best = PartPair{nested[x], nested[y], covered};
+      if (covered < params.min_coverage * size || covered <= best_covered) continue;
+      if (!twoObjects(whole, a, b, true, neighbours, crease, match, params)) continue;
+      best_pair = std::make_pair(nested[x], nested[y]);
+      best_covered = covered;
     }
   }
-  return best;
+  if (best_pair) return std::make_pair(parts[best_pair->first], parts[best_pair->second]);
+  // One object found alone; the rest of `whole` is the other (an object seen in pieces around
+  // the first, which is never found whole by itself). The largest such part.
+  std::optional<CandidateSegment> best_rest;
+  std::size_t best_part = 0;
+  for (std::size_t x = 0; x < nested.size(); ++x) {
+    const auto& a = parts[nested[x]].points;
+    if (best_rest && a.size() <= parts[best_part].points.size()) continue;
+    std::vector<int> rest = difference(whole.points, a);
+    if (rest.size() < params.min_part_fraction * size) continue;
+    // Not found alone, a rest meeting the part at a crease may belong to it (the upright of an
+    // L-shaped block, a mug's handle): only a rest apart from the part counts.
+    if (!twoObjects(whole, a, rest, false, neighbours, crease, match, params)) continue;
+    CandidateSegment other;
+    other.points = std::move(rest);
+    other.plane = whole.plane;
+    best_rest = std::move(other);
+    best_part = nested[x];
+  }
+  if (!best_rest) return std::nullopt;
+  best_rest->scores = score(best_rest->points, best_rest->plane);
+  return std::make_pair(parts[best_part], std::move(*best_rest));
 }
 
 bool samePoints(const CandidateSegment& a, const CandidateSegment& b) { return a.points == b.points; }
@@ -107,21 +150,21 @@ bool samePoints(const CandidateSegment& a, const CandidateSegment& b) { return a
 
 std::size_t splitCompositeSegments(std::vector<CandidateSegment>& segments, const std::vector<CandidateSegment>& parts,
                                    const std::vector<std::vector<int>>& neighbours, const CreaseTest& crease,
-                                   const ReflectionMatch& match, const CompositeSegmentParams& params) {
+                                   const ReflectionMatch& match, const SegmentScorer& score,
+                                   const CompositeSegmentParams& params) {
   std::vector<CandidateSegment> kept;
   std::vector<CandidateSegment> added;
   std::size_t replaced = 0;
   for (auto& segment : segments) {
-    const auto split = findSplit(segment, parts, neighbours, crease, match, params);
+    auto split = findSplit(segment, parts, neighbours, crease, match, score, params);
     if (!split) {
       kept.push_back(std::move(segment));
       continue;
     }
     ++replaced;
-    for (std::size_t index : {split->first, split->second}) {
-      const CandidateSegment& part = parts[index];
-      const auto same = [&](const CandidateSegment& other) { return samePoints(other, part); };
-      if (std::none_of(added.begin(), added.end(), same)) added.push_back(part);
+    for (CandidateSegment* part : {&split->first, &split->second}) {
+      const auto same = [&](const CandidateSegment& other) { return samePoints(other, *part); };
+      if (std::none_of(added.begin(), added.end(), same)) added.push_back(std::move(*part));
     }
   }
   // A part that is itself among the remaining segments is not added twice.
@@ -134,4 +177,5 @@ std::size_t splitCompositeSegments(std::vector<CandidateSegment>& segments, cons
 }
 
 }  // namespace symmetry_segmentation
+
 

@@ -114,7 +114,10 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
       const ReflectionEvidence evidence = graph.dataTerm(index, plane);
       return evidence.landing == ReflectionLanding::OnPoint ? evidence.match : -1;
     };
-    split_composites = splitCompositeSegments(passing, parts, graph.neighbours(), crease, match);
+    const SegmentScorer score = [&graph, this](const std::vector<int>& points, const SymmetryPlane& plane) {
+      return graph.scores(points, plane, params_.filter);
+    };
+    split_composites = splitCompositeSegments(passing, parts, graph.neighbours(), crease, match, score);
   }
   // Take objects the cut glued onto another object's segment back out of it (nested_segments.h).
   const ReflectionExplained explained = [&graph](int index, const SymmetryPlane& plane) {
