@@ -275,6 +275,20 @@ TEST(StrongestForegroundComponent, KeepsTheBestSupportedComponent) {
   EXPECT_TRUE(ss::strongestForegroundComponent(foreground, neighbours, {}, std::vector<float>(6, 0.0f)).empty());
 }
 
+TEST(StrongestForegroundComponent, AnchorPointsChooseTheirComponent) {
+  // The plane was proposed by the surface 0-1-2 (the weaker one): that object is kept.
+  const std::vector<std::vector<int>> neighbours = {{1}, {0, 2}, {1}, {4}, {3}};
+  const std::vector<char> foreground = {1, 1, 1, 1, 1};
+  const std::vector<float> support = {0.5f, 0.0f, 0.0f, 1.0f, 0.0f};
+  EXPECT_EQ(ss::strongestForegroundComponent(foreground, neighbours, {}, support, {1, 2}), (std::vector<int>{0, 1, 2}));
+  // Anchors in the background or absent: the best-supported component, as without anchors.
+  const std::vector<char> partly = {1, 0, 0, 1, 1};
+  EXPECT_EQ(ss::strongestForegroundComponent(partly, neighbours, {}, support, {1, 2}), (std::vector<int>{3, 4}));
+  // An anchored component without support is no object.
+  EXPECT_EQ(ss::strongestForegroundComponent(foreground, neighbours, {}, {0.0f, 0.0f, 0.0f, 1.0f, 0.0f}, {0}),
+            (std::vector<int>{3, 4}));
+}
+
 TEST(PointGrid, FindsExactlyThePointsWithinTheRadius) {
   ss::Cloud cloud;
   test_clouds::addBox(cloud, {0.0f, 0.0f, 0.0f}, {0.1f, 0.07f, 0.05f}, 0.01f);

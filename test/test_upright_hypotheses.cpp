@@ -75,6 +75,34 @@ TEST(UprightHypotheses, CylinderStripsProposeThePlaneBisectingWhatWasSeen) {
   EXPECT_TRUE(hasPlane(hypotheses, Eigen::Vector3f::UnitX(), axis, 8.0f, 0.003f));
 }
 
+TEST(UprightHypotheses, TwoTouchingCansMergedIntoOneSurfaceProposeAPlaneThroughEachAxis) {
+  // Their sides meet with equal normals and supervoxel merging makes one surface of both. Each
+  // can gets a plane through its own axis, anchored on its own side, and not the plane through
+  // both axes (under which each would drag the other into its cut).
+  ss::Cloud cloud;
+  std::vector<int> labels;
+  const Eigen::Vector3f left(0.0f, 0.0f, 0.0f), right(0.09f, 0.0f, 0.0f);  // radii 0.04 and 0.05
+  const float pi = static_cast<float>(M_PI);
+  addCylinderSide(cloud, labels, left, 0.04f, 0.12f, -pi, 0.0f, 1, 1);     // the front halves,
+  addCylinderSide(cloud, labels, right, 0.05f, 0.12f, -pi, 0.0f, 1, 1);    // seen from -y
+  const auto hypotheses = ss::uprightHypotheses(cloud, labels, kUp, ss::UprightHypothesisParams{}, ss::landingScore(cloud));
+  for (const Eigen::Vector3f& axis : {left, right}) {
+    const auto through = std::find_if(hypotheses.begin(), hypotheses.end(), [&](const ss::SymmetryHypothesis& h) {
+      return distanceToPlane(h.plane, axis) < 0.004f && !h.anchor.empty();
+    });
+    ASSERT_NE(through, hypotheses.end()) << "no anchored plane through the axis at x=" << axis.x();
+    EXPECT_GT(ss::planeAngleDeg(through->plane, ss::SymmetryPlane{Eigen::Vector3f::UnitY(), 0.0f}), 30.0f)
+        << "the plane through both axes";
+    // Most anchor points lie on this can's side.
+    int own = 0;
+    for (int i : through->anchor) {
+      const Eigen::Vector3f offset = cloud[i].getVector3fMap() - axis;
+      own += std::fabs(Eigen::Vector2f(offset.x(), offset.y()).norm() - (axis.x() > 0 ? 0.05f : 0.04f)) < 0.005f;
+    }
+    EXPECT_GT(own, static_cast<int>(0.8 * through->anchor.size()));
+  }
+}
+
 TEST(UprightHypotheses, BoxFacesProposeTheirBisectors) {
   ss::Cloud cloud;
   test_clouds::addBox(cloud, Eigen::Vector3f(0.1f, 0.2f, 0.0f), Eigen::Vector3f(0.12f, 0.08f, 0.1f), 0.008f);

@@ -27,7 +27,8 @@ void unite(std::vector<int>& parent, int a, int b) {
 std::vector<int> strongestForegroundComponent(const std::vector<char>& foreground,
                                               const std::vector<std::vector<int>>& neighbours,
                                               const std::vector<std::pair<int, int>>& links,
-                                              const std::vector<float>& support) {
+                                              const std::vector<float>& support,
+                                              const std::vector<int>& anchor) {
   const int n = static_cast<int>(foreground.size());
   std::vector<int> parent(n);
   std::iota(parent.begin(), parent.end(), 0);
@@ -45,9 +46,16 @@ std::vector<int> strongestForegroundComponent(const std::vector<char>& foregroun
   for (int i = 0; i < n; ++i) {
     if (foreground[i]) component_support[findRoot(parent, i)] += support[i];
   }
+  std::vector<int> anchored(n, 0);
+  for (int i : anchor) {
+    if (i >= 0 && i < n && foreground[i]) ++anchored[findRoot(parent, i)];
+  }
   int best = -1;
   for (int i = 0; i < n; ++i) {
-    if (component_support[i] > 0.0 && (best < 0 || component_support[i] > component_support[best])) best = i;
+    if (component_support[i] <= 0.0) continue;
+    const bool better = best < 0 || anchored[i] > anchored[best] ||
+                        (anchored[i] == anchored[best] && component_support[i] > component_support[best]);
+    if (better) best = i;
   }
   std::vector<int> kept;
   if (best < 0) return kept;

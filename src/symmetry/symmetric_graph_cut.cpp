@@ -93,7 +93,7 @@ ReflectionEvidence SymmetricGraphCut::dataTerm(int index, const SymmetryPlane& p
   return dataTermView().evaluate(index, plane);
 }
 
-std::vector<int> SymmetricGraphCut::segment(const SymmetryPlane& plane) const {
+std::vector<int> SymmetricGraphCut::segment(const SymmetryPlane& plane, const std::vector<int>& anchor) const {
   const int n = static_cast<int>(cloud_->size());
   const ReflectionDataTerm data_term = dataTermView();
   std::vector<ReflectionEvidence> evidence(n);
@@ -136,7 +136,7 @@ std::vector<int> SymmetricGraphCut::segment(const SymmetryPlane& plane) const {
     // Ties (e.g. points with no evidence and no link to any) go to the background.
     foreground[i] = graph.what_segment(i, FlowGraph::SINK) == FlowGraph::SOURCE;
   }
-  return strongestForegroundComponent(foreground, neighbours_, symmetric_links, support);
+  return strongestForegroundComponent(foreground, neighbours_, symmetric_links, support, anchor);
 }
 
 }  // namespace symmetry_segmentation

@@ -71,7 +71,7 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
   std::vector<CandidateSegment> candidates(hypotheses.size());
   parallelFor(hypotheses.size(), params_.threads, [&](std::size_t i) {
     candidates[i].plane = hypotheses[i].plane;
-    candidates[i].points = graph.segment(hypotheses[i].plane);
+    candidates[i].points = graph.segment(hypotheses[i].plane, hypotheses[i].anchor);
   });
   result.timing_ms.emplace_back("graph_cut", stage.lap());
 
@@ -84,7 +84,7 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
     // The same plane would give the same cut.
     const bool moved = candidate.plane.normal != before.normal || candidate.plane.distance != before.distance;
     if (params_.refinement.enabled && moved) {
-      candidate.points = graph.segment(candidate.plane);
+      candidate.points = graph.segment(candidate.plane, hypotheses[i].anchor);
       cut_again[i] = 1;
     }
     candidate.scores = graph.scores(candidate.points, candidate.plane, params_.filter);

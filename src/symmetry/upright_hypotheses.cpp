@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <iterator>
 #include <memory>
+#include <random>
 
 #include <Eigen/Eigenvalues>
 
@@ -85,12 +87,148 @@ bool fitVerticalAxis(const Cloud& cloud, const std::vector<int>& points, const E
   return std::sqrt(squared_residual / used) < params.max_axis_residual && radius < params.max_axis_radius;
 }
 
+/// Horizontal unit normal of point i, or false for a near-horizontal surface point.
+bool horizontalNormal(const Cloud& cloud, int i, const Eigen::Vector3f& up, Eigen::Vector3f& d) {
+  d = cloud.points[i].getNormalVector3fMap();
+  d -= d.dot(up) * up;
+  if (d.norm() < 0.3f) return false;
+  d.normalize();
+  return true;
+}
+
+/// Whether the points' horizontal normal directions turn continuously: about min_normal_spread_deg
+/// of arc in steps of at most 10 degrees. Two flat faces meeting at an edge (normals in two
+/// bundles) have normal lines that cross, yet no axis.
+bool coversAnArc(const Cloud& cloud, const std::vector<int>& points, const Eigen::Vector3f& up,
+                 const UprightHypothesisParams& params) {
+  constexpr int kBins = 36;  // 10 degrees each
+  std::vector<int> count(kBins, 0);
+  const Eigen::Vector3f helper = std::fabs(up.x()) < 0.9f ? Eigen::Vector3f::UnitX() : Eigen::Vector3f::UnitY();
+  const Eigen::Vector3f e1 = up.cross(helper).normalized();
+  const Eigen::Vector3f e2 = up.cross(e1);
+  for (int i : points) {
+    Eigen::Vector3f d;
+    if (!horizontalNormal(cloud, i, up, d)) continue;
+    const float angle = std::atan2(d.dot(e2), d.dot(e1));
+    const int bin = static_cast<int>(std::floor((angle + static_cast<float>(M_PI)) / (2.0f * static_cast<float>(M_PI)) * kBins));
+    ++count[std::clamp(bin, 0, kBins - 1)];
+  }
+  // The longest run of occupied bins (around the circle).
+  const int needed = static_cast<int>(std::ceil(params.min_normal_spread_deg / 10.0f)) + 1;
+  int longest = 0;
+  for (int start = 0; start < kBins; ++start) {
+    int run = 0;
+    while (run < kBins && count[(start + run) % kBins] > 0) ++run;
+    longest = std::max(longest, run);
+  }
+  return longest >= needed;
+}
+
+struct Axis {
+  std::vector<int> points;  ///< The surface points whose normal lines pass near it.
+  Eigen::Vector3f point;
+  float radius = 0.0f;
+};
+
+/// Vertical axes of the surfaces of revolution a merged surface covers. Usually one; where round
+/// objects touch, their sides meet with equal normals and merge into one surface, and each
+/// object's axis is found by sampling pairs of normal lines (seeded: the same surface always
+/// gives the same axes).
+std::vector<Axis> fitVerticalAxes(const Cloud& cloud, const std::vector<int>& points, const Eigen::Vector3f& up,
+                                  const UprightHypothesisParams& params) {
+  constexpr int kMaxAxes = 3;
+  constexpr int kSamples = 64;
+  constexpr float kMinAxisShare = 0.3f;
+  std::vector<Axis> axes;
+  std::vector<int> remaining;
+  for (int i : points) {
+    Eigen::Vector3f d;
+    if (horizontalNormal(cloud, i, up, d)) remaining.push_back(i);
+  }
+  std::mt19937 random(12345u);
+  while (static_cast<int>(axes.size()) < kMaxAxes && static_cast<int>(remaining.size()) >= params.min_surface_points) {
+    Axis axis;
+    if (fitVerticalAxis(cloud, remaining, up, params, axis.point, axis.radius)) {
+      axis.points = remaining;
+      axes.push_back(std::move(axis));
+      break;
+    }
+    // The axis most normal lines pass near: two lines meet at a candidate.
+    std::uniform_int_distribution<std::size_t> pick(0, remaining.size() - 1);
+    std::vector<int> best_inliers;
+    for (int sample = 0; sample < kSamples; ++sample) {
+      const int i = remaining[pick(random)];
+      const int j = remaining[pick(random)];
+      Eigen::Vector3f di, dj;
+      horizontalNormal(cloud, i, up, di);
+      horizontalNormal(cloud, j, up, dj);
+      const float sin_angle = up.dot(di.cross(dj));
+      if (std::fabs(sin_angle) < std::sin(params.min_normal_spread_deg * kDegToRad)) continue;
+      // x_i + s d_i meets x_j + t d_j (horizontally): s = ((x_j - x_i) x d_j) . up / (d_i x d_j) . up
+      const Eigen::Vector3f xi = cloud.points[i].getVector3fMap();
+      const Eigen::Vector3f xj = cloud.points[j].getVector3fMap();
+      const float s = up.dot((xj - xi).cross(dj)) / sin_angle;
+      if (std::fabs(s) > params.max_axis_radius) continue;
+      const Eigen::Vector3f candidate = xi + s * di;
+      std::vector<int> inliers;
+      for (int k : remaining) {
+        Eigen::Vector3f dk;
+        horizontalNormal(cloud, k, up, dk);
+        Eigen::Vector3f offset = candidate - cloud.points[k].getVector3fMap();
+        offset -= offset.dot(up) * up;
+        if (std::fabs(up.cross(dk).dot(offset)) < params.max_axis_residual && offset.norm() < params.max_axis_radius) {
+          inliers.push_back(k);
+        }
+      }
+      if (inliers.size() > best_inliers.size()) best_inliers = std::move(inliers);
+    }
+    // A share of the surface, not a thin curve across it: on a twisted strip the normal lines
+    // of a few points per height pass near any vertical line.
+    if (static_cast<int>(best_inliers.size()) < params.min_surface_points ||
+        best_inliers.size() < kMinAxisShare * remaining.size()) {
+      break;
+    }
+    if (!coversAnArc(cloud, best_inliers, up, params)) break;
+    if (!fitVerticalAxis(cloud, best_inliers, up, params, axis.point, axis.radius)) break;
+    std::vector<int> rest;
+    std::set_difference(remaining.begin(), remaining.end(), best_inliers.begin(), best_inliers.end(),
+                        std::back_inserter(rest));
+    axis.points = std::move(best_inliers);
+    axes.push_back(std::move(axis));
+    remaining = std::move(rest);
+  }
+  return axes;
+}
+
+float distanceFromAxis(const Eigen::Vector3f& p, const Axis& axis, const Eigen::Vector3f& up) {
+  Eigen::Vector3f offset = p - axis.point;
+  offset -= offset.dot(up) * up;
+  return offset.norm();
+}
+
+/// Whether p lies on the surface of revolution of another axis and not on that of `axis`.
+bool onAnotherRoundSurface(const Eigen::Vector3f& p, const Axis& axis, const std::vector<Axis>& other_axes,
+                           const Eigen::Vector3f& up) {
+  if (std::fabs(distanceFromAxis(p, axis, up) - axis.radius) < kLandingRadius) return false;
+  for (const Axis& other : other_axes) {
+    if (&other == &axis) continue;
+    if (std::fabs(distanceFromAxis(p, other, up) - other.radius) < kLandingRadius &&
+        (other.point - axis.point).norm() > kLandingRadius) {
+      return true;
+    }
+  }
+  return false;
+}
+
 /// The vertical plane through the axis under which the scene points around it (the object the
 /// surface belongs to, as far as it was seen) are best explained by their reflections. A surface
 /// is often only a strip of its object, so the strip alone would pick its own bisector.
-SymmetryHypothesis bestPlaneThroughAxis(const Cloud& cloud, const ReflectionScore& score,
-                                        const std::vector<int>& surface, const Eigen::Vector3f& axis_point,
-                                        float axis_radius, const Eigen::Vector3f& up, int support) {
+SymmetryHypothesis bestPlaneThroughAxis(const Cloud& cloud, const ReflectionScore& score, const Axis& axis,
+                                        const std::vector<Axis>& other_axes, const Eigen::Vector3f& up) {
+  const std::vector<int>& surface = axis.points;
+  const Eigen::Vector3f& axis_point = axis.point;
+  const float axis_radius = axis.radius;
+  const int support = static_cast<int>(surface.size());
   // The column around the axis, over the surface's own height (what stands on or under the
   // object is not its business).
   float low = std::numeric_limits<float>::max(), high = -std::numeric_limits<float>::max();
@@ -108,7 +246,11 @@ SymmetryHypothesis bestPlaneThroughAxis(const Cloud& cloud, const ReflectionScor
     const float height = offset.dot(up) + up.dot(axis_point);
     if (height < low || height > high) continue;
     offset -= offset.dot(up) * up;
-    if (offset.squaredNorm() < reach * reach) around.push_back(static_cast<int>(i));
+    if (offset.squaredNorm() >= reach * reach) continue;
+    // A touching round neighbour's side is its own business: its axis would tilt the choice
+    // toward the plane through both axes, and the cut would take both objects.
+    if (onAnotherRoundSurface(cloud.points[i].getVector3fMap(), axis, other_axes, up)) continue;
+    around.push_back(static_cast<int>(i));
   }
   const Eigen::Vector3f helper = std::fabs(up.x()) < 0.9f ? Eigen::Vector3f::UnitX() : Eigen::Vector3f::UnitY();
   const Eigen::Vector3f e1 = up.cross(helper).normalized();
@@ -152,6 +294,7 @@ std::vector<SymmetryHypothesis> uprightHypotheses(const Cloud& cloud, const std:
   }
 
   std::vector<SymmetryHypothesis> result;
+  std::vector<Axis> axes;
   const float vertical_sin = std::sin(params.face_tilt_deg * kDegToRad);
   const float horizontal_cos = std::cos(params.face_tilt_deg * kDegToRad);
   for (const Surface& surface : surfaces) {
@@ -191,12 +334,13 @@ std::vector<SymmetryHypothesis> uprightHypotheses(const Cloud& cloud, const std:
     }
     const bool flat = mean_normal.norm() / static_cast<float>(n) > std::cos(params.flat_normal_spread_deg * kDegToRad);
     if (flat) continue;
-    Eigen::Vector3f axis_point;
-    float axis_radius = 0.0f;
-    if (!fitVerticalAxis(cloud, surface.points, up, params, axis_point, axis_radius)) continue;
-    // Any vertical plane through the axis is a symmetry plane of a surface of revolution; the
-    // one that maps most of the seen part of the surface onto itself bisects what was seen.
-    result.push_back(bestPlaneThroughAxis(cloud, score, surface.points, axis_point, axis_radius, up, n));
+    for (Axis& axis : fitVerticalAxes(cloud, surface.points, up, params)) axes.push_back(std::move(axis));
+  }
+  // Any vertical plane through an axis is a symmetry plane of a surface of revolution; the one
+  // that maps most of the seen part of the object onto itself bisects what was seen.
+  for (const Axis& axis : axes) {
+    result.push_back(bestPlaneThroughAxis(cloud, score, axis, axes, up));
+    result.back().anchor = axis.points;
   }
   return result;
 }

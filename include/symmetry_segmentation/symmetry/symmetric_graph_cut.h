@@ -29,8 +29,9 @@ class SymmetricGraphCut {
   SymmetricGraphCut(Cloud::ConstPtr cloud, const OccupancyMap& occupancy,
                     std::optional<PlaneCoefficients> table_plane, const SymmetryCutParams& params);
 
-  /// Foreground working-cloud indices (sorted) for `plane`.
-  std::vector<int> segment(const SymmetryPlane& plane) const;
+  /// Foreground working-cloud indices (sorted) for `plane`: one connected object, the one holding
+  /// most `anchor` points if any are given (see strongest_component.h).
+  std::vector<int> segment(const SymmetryPlane& plane, const std::vector<int>& anchor = {}) const;
 
   /// Occlusion score (fraction of segment points whose reflection does not land in free space)
   /// and smoothness score (broken smooth links per segment point).

@@ -11,6 +11,9 @@ namespace symmetry_segmentation {
 struct SymmetryHypothesis {
   SymmetryPlane plane;  ///< Canonical sign (canonicalPlane).
   int support = 0;      ///< Matched point pairs behind it.
+  /// Working-cloud points of the surface that proposed it, if known: one plane can be a symmetry
+  /// of several objects, and the cut keeps the one these points are on.
+  std::vector<int> anchor;
 };
 
 /// A plane sample for mean shift, with its weight.
