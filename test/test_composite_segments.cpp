@@ -122,7 +122,7 @@ TEST(CompositeSegments, PartsThatDoNotTouchAreTwoObjects) {
   EXPECT_EQ(segments.size(), 2u);
 }
 
-TEST(CompositeSegments, TheRestOfOneObjectFoundAloneIsTheOtherWhenApart) {
+TEST(CompositeSegments, TheRestOfOneObjectFoundAloneIsTheOtherWhenApartOrMetAtCreasesOnly) {
   // Only A (0..59) is found alone; the rest (60..99) is hardly linked to it.
   std::vector<ss::CandidateSegment> segments = {segment(0, 99, 1.0f)};
   EXPECT_EQ(ss::splitCompositeSegments(segments, {segment(0, 59, 2.0f)}, chainNeighbours(), noCrease,
@@ -134,12 +134,24 @@ TEST(CompositeSegments, TheRestOfOneObjectFoundAloneIsTheOtherWhenApart) {
   EXPECT_EQ(segments[1].plane.distance, 1.0f) << "the rest keeps the larger segment's plane";
   EXPECT_EQ(segments[1].scores.occlusion, 0.5f) << "and is scored for it";
 
-  // Meeting A at a crease, a rest not found alone may be part of A's object: kept whole.
+  // Meeting A at creases only (no face running on across the seam): still two objects.
   ss::CompositeSegmentParams params;
   params.min_seam_links = 1;
   std::vector<ss::CandidateSegment> creased = {segment(0, 99, 1.0f)};
   EXPECT_EQ(ss::splitCompositeSegments(creased, {segment(0, 59, 2.0f)}, chainNeighbours(), creaseAtSeam,
                                        mirrorWithinObject, markedScores, params),
+            1u);
+  // A flat link across the seam as well (a flush face): the rest may be the part's own, kept
+  // whole; two objects both found alone would still be split at that seam.
+  auto flush = chainNeighbours();
+  flush[58].push_back(61);
+  flush[61].push_back(58);
+  std::vector<ss::CandidateSegment> one_body = {segment(0, 99, 1.0f)};
+  EXPECT_EQ(ss::splitCompositeSegments(one_body, {segment(0, 59, 2.0f)}, flush, creaseAtSeam, mirrorWithinObject,
+                                       markedScores, params),
             0u);
-  EXPECT_EQ(creased.size(), 1u);
+  EXPECT_EQ(one_body.size(), 1u);
+  EXPECT_EQ(ss::splitCompositeSegments(one_body, {segment(0, 59, 2.0f), segment(60, 99, 3.0f)}, flush, creaseAtSeam,
+                                       mirrorWithinObject, markedScores, params),
+            1u);
 }

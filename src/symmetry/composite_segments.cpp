@@ -31,13 +31,11 @@ bool contains(const std::vector<int>& sorted, int value) {
   return std::binary_search(sorted.begin(), sorted.end(), value);
 }
 
-enum class Contact { Apart, Creased, Smooth };
-
-/// How parts a and b meet: hardly linked, at a seam most of whose links cross a crease, or
-/// smoothly.
-Contact contactBetween(const std::vector<int>& a, const std::vector<int>& b,
-                       const std::vector<std::vector<int>>& neighbours, const CreaseTest& crease,
-                       const CompositeSegmentParams& params) {
+/// How parts a and b meet: hardly linked (false), else whether at least `min_crease_fraction`
+/// of the links between them cross a crease.
+bool apartOrCreased(const std::vector<int>& a, const std::vector<int>& b,
+                    const std::vector<std::vector<int>>& neighbours, const CreaseTest& crease,
+                    float min_crease_fraction, const CompositeSegmentParams& params) {
   int links = 0;
   int creased = 0;
   for (int p : a) {
@@ -48,8 +46,7 @@ Contact contactBetween(const std::vector<int>& a, const std::vector<int>& b,
       creased += crease(p, q) ? 1 : 0;
     }
   }
-  if (links < params.min_seam_links) return Contact::Apart;
-  return creased >= params.min_crease_fraction * links ? Contact::Creased : Contact::Smooth;
+  return links < params.min_seam_links || creased >= min_crease_fraction * links;
 }
 
 /// Whether `plane` mirrors more than the allowed share of `part`'s matched points onto `other`.
@@ -73,14 +70,13 @@ std::vector<int> difference(const std::vector<int>& a, const std::vector<int>& b
   return rest;
 }
 
-/// Whether parts a and b of `whole` are two objects: apart (or, if `creased_counts`, meeting at a
-/// concave seam), each mirrored onto itself by `whole`'s plane.
+/// Whether parts a and b of `whole` are two objects: apart or meeting at a concave seam (at least
+/// `min_crease_fraction` of their links creased), each mirrored onto itself by `whole`'s plane.
 bool twoObjects(const CandidateSegment& whole, const std::vector<int>& a, const std::vector<int>& b,
-                bool creased_counts, const std::vector<std::vector<int>>& neighbours, const CreaseTest& crease,
+                float min_crease_fraction, const std::vector<std::vector<int>>& neighbours, const CreaseTest& crease,
                 const ReflectionMatch& match, const CompositeSegmentParams& params) {
-  const Contact contact = contactBetween(a, b, neighbours, crease, params);
-  if (contact == Contact::Smooth || (contact == Contact::Creased && !creased_counts)) return false;
-  return !mirroredOntoOther(a, b, whole.plane, match, params) && !mirroredOntoOther(b, a, whole.plane, match, params);
+  return apartOrCreased(a, b, neighbours, crease, min_crease_fraction, params) &&
+         !mirroredOntoOther(a, b, whole.plane, match, params) && !mirroredOntoOther(b, a, whole.plane, match, params);
 }
 
 /// The two objects `whole` is made of: two segments of `parts` covering it, else one segment of
@@ -115,7 +111,7 @@ std::optional<std::pair<CandidateSegment, CandidateSegment>> findSplit(
       // Points of `whole` in either part (the shared ones counted once, bounded by `shared`).
       const std::size_t covered = inside[x] + inside[y] - std::min(shared, std::min(inside[x], inside[y]));
       if (covered < params.min_coverage * size || covered <= best_covered) continue;
-      if (!twoObjects(whole, a, b, true, neighbours, crease, match, params)) continue;
+      if (!twoObjects(whole, a, b, params.min_crease_fraction, neighbours, crease, match, params)) continue;
       best_pair = std::make_pair(nested[x], nested[y]);
       best_covered = covered;
     }
@@ -130,9 +126,9 @@ std::optional<std::pair<CandidateSegment, CandidateSegment>> findSplit(
     if (best_rest && a.size() <= parts[best_part].points.size()) continue;
     std::vector<int> rest = difference(whole.points, a);
     if (rest.size() < params.min_part_fraction * size) continue;
-    // Not found alone, a rest meeting the part at a crease may belong to it (the upright of an
-    // L-shaped block, a mug's handle): only a rest apart from the part counts.
-    if (!twoObjects(whole, a, rest, false, neighbours, crease, match, params)) continue;
+    // Not found alone, a rest may belong to the part (the upright of an L-shaped block, whose
+    // faces run on flush across the seam): it counts only if apart or met at creases alone.
+    if (!twoObjects(whole, a, rest, params.min_rest_crease_fraction, neighbours, crease, match, params)) continue;
     CandidateSegment other;
     other.points = std::move(rest);
     other.plane = whole.plane;

@@ -34,6 +34,8 @@ struct CompositeSegmentParams {
   float max_part_overlap = 0.1f;     ///< Parts share at most this share of the smaller part.
   float min_coverage = 0.85f;        ///< The two parts cover at least this share of the composite.
   float min_crease_fraction = 0.5f;  ///< Share of the links between the parts that cross a crease.
+  float min_rest_crease_fraction = 0.9f;  ///< The same for a part not found alone (a flush face
+                                          ///< running on across the seam makes it fall short).
   int min_seam_links = 5;            ///< Parts linked by fewer links are apart (no seam to judge).
   float max_swapped_fraction = 0.3f; ///< Share of a part's matched reflections (about the larger
                                      ///< segment's plane) landing on the other part, above which
@@ -44,8 +46,8 @@ struct CompositeSegmentParams {
 /// the remaining segments): two segments of `parts` that together make it up, else one segment of
 /// `parts` and the rest of it (an object seen in pieces around the other is never found whole on
 /// its own; the rest keeps the larger segment's
-/// plane and is scored by `score`). The two must be apart or meet at a concave seam (a rest must
-/// be apart), and the larger segment's plane must mirror each onto itself.
+/// plane and is scored by `score`). The two must be apart or meet at a concave seam (a rest at
+/// creases only), and the larger segment's plane must mirror each onto itself.
 /// `neighbours[i]`: the working-cloud points linked to point i. Returns how many were replaced.
 std::size_t splitCompositeSegments(std::vector<CandidateSegment>& segments, const std::vector<CandidateSegment>& parts,
                                    const std::vector<std::vector<int>>& neighbours, const CreaseTest& crease,
