@@ -20,6 +20,9 @@ constexpr float kDegToRad = static_cast<float>(M_PI) / 180.0f;
 constexpr int kAxisPlaneAngles = 24;     // Planes through an axis tried every 7.5 degrees.
 constexpr float kLandingRadius = 0.01f;  // A reflection this close to the surface lands on it (m).
 constexpr float kColumnMargin = 0.02f;   // Height margin of the scored column around an axis (m).
+// Orientations whose contradiction (summed free-space costs, about one per point) is within this
+// of the least are told apart by agreement.
+constexpr float kContradictionTolerance = 1.0f;
 
 struct Surface {
   std::vector<int> points;
@@ -255,16 +258,28 @@ SymmetryHypothesis bestPlaneThroughAxis(const Cloud& cloud, const ReflectionScor
   const Eigen::Vector3f helper = std::fabs(up.x()) < 0.9f ? Eigen::Vector3f::UnitX() : Eigen::Vector3f::UnitY();
   const Eigen::Vector3f e1 = up.cross(helper).normalized();
   const Eigen::Vector3f e2 = up.cross(e1);
+  // Contradiction first, agreement second: however many points of the seen side a bisector of
+  // the seen arc matches, a handle it mirrors into free space rules it out.
   std::vector<SymmetryHypothesis> planes;
-  std::vector<float> totals;
+  std::vector<float> contradiction, agreement;
   for (int k = 0; k < kAxisPlaneAngles; ++k) {
     const float angle = static_cast<float>(M_PI) * static_cast<float>(k) / kAxisPlaneAngles;
     planes.push_back(verticalPlane(axis_point, std::cos(angle) * e1 + std::sin(angle) * e2, up, support));
-    float total = 0.0f;
-    for (int i : around) total += score(i, planes.back().plane);
-    totals.push_back(total);
+    float against = 0.0f, for_it = 0.0f;
+    for (int i : around) {
+      const float s = score(i, planes.back().plane);
+      (s < 0.0f ? against : for_it) += s;
+    }
+    contradiction.push_back(-against);
+    agreement.push_back(for_it);
   }
-  return planes[std::max_element(totals.begin(), totals.end()) - totals.begin()];
+  const float least = *std::min_element(contradiction.begin(), contradiction.end());
+  int best = -1;
+  for (int k = 0; k < kAxisPlaneAngles; ++k) {
+    if (contradiction[k] > least + kContradictionTolerance) continue;
+    if (best < 0 || agreement[k] > agreement[best]) best = k;
+  }
+  return planes[best];
 }
 
 }  // namespace
