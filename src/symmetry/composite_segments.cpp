@@ -31,8 +31,8 @@ bool contains(const std::vector<int>& sorted, int value) {
   return std::binary_search(sorted.begin(), sorted.end(), value);
 }
 
-/// How parts a and b meet: hardly linked (false), else whether at least `min_crease_fraction`
-/// of the links between them cross a crease.
+/// Whether parts a and b are apart (fewer than min_seam_links links between them) or meet at a
+/// seam at least `min_crease_fraction` of whose links cross a crease.
 bool apartOrCreased(const std::vector<int>& a, const std::vector<int>& b,
                     const std::vector<std::vector<int>>& neighbours, const CreaseTest& crease,
                     float min_crease_fraction, const CompositeSegmentParams& params) {
