@@ -231,6 +231,11 @@ void SegmentationNodelet::handleTimeJump() {
   NODELET_WARN("ROS time moved backwards by %.3f s (restarted bag?): clearing the tf buffer", back.toSec());
   tf_buffer_->clear();
   tf_filter_->clear();
+  {
+    // A cloud waiting from before the jump is stamped in the new "future": no transform for it.
+    std::lock_guard<std::mutex> lock(queue_mutex_);
+    pending_cloud_.reset();
+  }
   std::lock_guard<std::mutex> lock(moved_map_mutex_);
   moved_map_ = MovedMap();
 }

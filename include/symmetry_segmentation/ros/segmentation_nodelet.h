@@ -68,7 +68,7 @@ class SegmentationNodelet : public nodelet::Nodelet {
   /// call waiting for a cloud), unsubscribes otherwise.
   void updateInputSubscription();
   /// With ROS time moving backwards (a bag restarted with --clock), transforms stamped in the
-  /// "future" would be used or block the filter: clears the tf buffer and the filter's queue.
+  /// "future" would be used or block the filter: clears the tf buffer, the filter's queue and the pending cloud.
   void handleTimeJump();
   /// The cached map moved into `frame` (by `map_to_frame`) over a region containing `box`.
   std::shared_ptr<octomap::OcTree> movedMap(const std::shared_ptr<octomap::OcTree>& map, const std::string& frame,
