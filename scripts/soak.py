@@ -124,6 +124,10 @@ class Soak:
                         "--rate", "10", "--voxel", "0.01", "--camera-frame", "recorded_camera",
                         "--cloud-topic", "/segmentation/input", "--octomap-topic", "/segmentation/octomap"],
                        check=True, stdout=subprocess.DEVNULL)
+        # scene_to_bag writes bz2 chunks of one cloud each: the player decompresses one per message,
+        # falls behind real time on a busy machine and its clock then steps back and forth.
+        subprocess.run(["rosbag", "decompress", "--force", self.bag], check=True, stdout=subprocess.DEVNULL,
+                       stderr=subprocess.DEVNULL)
 
     def read_bag(self):
         import rosbag
@@ -201,9 +205,12 @@ class Soak:
 
     def tf_loop(self):
         # map -> camera at 20 Hz (wall), stamped with simulated time; paused while tf is dropped.
+        last = None
         while not self.stop.is_set():
             now = self.rospy.Time.now()
-            if self.tf_enabled.is_set() and not now.is_zero():
+            # Not the same stamp twice (tf2 warns about it): the clock stands while the player restarts.
+            if self.tf_enabled.is_set() and not now.is_zero() and now != last:
+                last = now
                 transform = self.TransformStamped()
                 transform.header.stamp = now
                 transform.header.frame_id = "map"
@@ -353,8 +360,13 @@ class Soak:
     def wait_processed(self, count):
         while True:
             with self.lock:
-                if self.processed >= count:
-                    return
+                processed, calls = self.processed, self.calls
+            if processed >= count:
+                return
+            if time.monotonic() - getattr(self, "last_progress", 0.0) > 60.0:
+                self.last_progress = time.monotonic()
+                self.log("progress: %d clouds processed, %d service calls, VmRSS %.1f MB" % (
+                    processed, calls, vm_rss_kb(self.processes["node"].pid) / 1024.0))
             self.wait_wall(1.0)
 
     def memory(self, label):
