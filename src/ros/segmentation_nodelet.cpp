@@ -23,6 +23,8 @@ namespace symmetry_segmentation {
 namespace {
 using Response = SegmentCloud::Response;
 
+constexpr double kTimeJumpTolerance = 0.5;  // s: smaller jumps back are not acted on
+
 // Waits for a transform against the wall clock: with use_sim_time a stopped player stops the
 // clock, and tf2's own timeout (in ROS time) would then never expire.
 bool waitForTransform(const tf2_ros::Buffer& buffer, const std::string& target, const std::string& source,
@@ -227,7 +229,9 @@ void SegmentationNodelet::handleTimeJump() {
     if (now < last_time_) back = last_time_ - now;
     last_time_ = now;
   }
-  if (back.isZero()) return;
+  // rosbag play's clock jitters back by milliseconds when the player runs late: transforms that
+  // little ahead do no harm (tf2's listener still clears its buffer on those by itself).
+  if (back <= ros::Duration(kTimeJumpTolerance)) return;
   NODELET_WARN("ROS time moved backwards by %.3f s (restarted bag?): clearing the tf buffer", back.toSec());
   tf_buffer_->clear();
   tf_filter_->clear();

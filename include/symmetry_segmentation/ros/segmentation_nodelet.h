@@ -67,7 +67,7 @@ class SegmentationNodelet : public nodelet::Nodelet {
   /// Subscribes ~input while it is needed (on_demand mode, an output subscriber, or a ~segment
   /// call waiting for a cloud), unsubscribes otherwise.
   void updateInputSubscription();
-  /// With ROS time moving backwards (a bag restarted with --clock), transforms stamped in the
+  /// With ROS time moving backwards by more than 0.5 s (a bag restarted with --clock), transforms stamped in the
   /// "future" would be used or block the filter: clears the tf buffer, the filter's queue and the pending cloud.
   void handleTimeJump();
   /// The cached map moved into `frame` (by `map_to_frame`) over a region containing `box`.
