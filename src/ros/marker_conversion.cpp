@@ -17,7 +17,7 @@ namespace {
 
 constexpr double kPlaneThickness = 0.002;  // m
 constexpr double kArrowLength = 0.1;       // m
-constexpr float kObjectListHeight = 0.15f; // m above the highest point
+constexpr float kObjectListHeight = 0.2f;  // m above the highest point
 
 geometry_msgs::Point toPoint(const Eigen::Vector3f& v) {
   geometry_msgs::Point p;
@@ -135,7 +135,7 @@ visualization_msgs::MarkerArray symmetryMarkers(const Cloud& cloud, const Segmen
     const Eigen::Vector3f centre = scene_box.center();
     auto list = baseMarker(header, "object_list", 0, visualization_msgs::Marker::TEXT_VIEW_FACING);
     list.pose.position = toPoint(Eigen::Vector3f(centre.x(), centre.y(), scene_box.max().z() + kObjectListHeight));
-    list.scale.z = 0.025;  // text height
+    list.scale.z = 0.02;  // text height
     list.color.r = list.color.g = list.color.b = list.color.a = 1.0f;
     list.text = objectListText(cloud, result);
     markers.markers.push_back(list);

@@ -440,7 +440,7 @@ TEST(MarkerConversion, DeleteAllThenPlanePatchArrowAndText) {
   EXPECT_EQ(list.text, "1 object\n1: " + std::to_string(cloud.size()) + " points");
   EXPECT_NEAR(list.pose.position.x, 1.0, 1e-4);
   EXPECT_NEAR(list.pose.position.y, 2.0, 1e-4);
-  EXPECT_GT(list.pose.position.z, 3.025 + 0.1);
+  EXPECT_NEAR(list.pose.position.z, 3.025 + 0.2, 1e-4);
 
   const auto none = ss::symmetryMarkers(cloud, ss::SegmentationResult{}, header);
   ASSERT_EQ(none.markers.size(), 2u);

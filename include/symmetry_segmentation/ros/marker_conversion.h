@@ -15,7 +15,7 @@ namespace symmetry_segmentation {
 /// First marker: DELETEALL (stale markers of the previous result vanish), then namespaces
 /// "planes", "normals" and "ids" with marker id = object id (1-based). Segments without a
 /// symmetry plane get a text id only. Last (when the cloud has a usable point), namespace
-/// "object_list", id 0: objectListText as one text centred 0.15 m above the cloud.
+/// "object_list", id 0: objectListText as one text centred 0.2 m above the cloud.
 visualization_msgs::MarkerArray symmetryMarkers(const Cloud& cloud, const SegmentationResult& result,
                                                 const std_msgs::Header& header);
 
