@@ -7,9 +7,10 @@ be dropped), 4 threads calling ~segment with the scene's cloud, and a schedule o
   warm-up   every abuse below once, so one-off allocations are in the baseline; then VmRSS
             "start" = median of 5 samples, 1 s apart, while the node is busy
   during    tf stops for 10 s; empty and all-NaN clouds (topic and service); a 5M-point cloud
-            (topic and service: rejected by ~max_input_points); an OctoMap in frame "odom"
-            (moved into "map" through tf); the bag player killed and restarted (time jumps
-            back; the loop itself jumps back at every pass too)
+            (topic and service: rejected by ~max_input_points); for 10 s the OctoMap in frame
+            "odom" (moved into "map" through tf; the map comes from here, not from the bag);
+            the bag player killed and restarted (time jumps back; the loop itself jumps back
+            at every pass too)
   end       VmRSS "end" the same way, once at least --clouds clouds were segmented from the
             topic (counted on ~objects: service results are stamped 0, topic ones with the
             bag's stamps)
@@ -122,7 +123,7 @@ class Soak:
         # so the only map -> camera is the one published (and dropped) here.
         subprocess.run([os.path.join(self.tools, "scene_to_bag"), scene, "--output", self.bag, "--clouds", "50",
                         "--rate", "10", "--voxel", "0.01", "--camera-frame", "recorded_camera",
-                        "--cloud-topic", "/segmentation/input", "--octomap-topic", "/segmentation/octomap"],
+                        "--cloud-topic", "/segmentation/input", "--octomap-topic", "/recorded_octomap"],
                        check=True, stdout=subprocess.DEVNULL)
         # scene_to_bag writes bz2 chunks of one cloud each: the player decompresses one per message,
         # falls behind real time on a busy machine and its clock then steps back and forth.
@@ -175,14 +176,15 @@ class Soak:
         low, high = xyz.min(axis=0), xyz.max(axis=0)
         self.roi = (low + 0.25 * (high - low), high - 0.25 * (high - low) + [0, 0, 1.0])
 
-    def odom_map(self):
-        """The bag's map as if it came in frame "odom" (tf map -> odom: identity)."""
+    def recorded_map(self, frame):
+        """The bag's map, in `frame` (tf map -> odom is the identity). The bag's own map goes to a
+        topic the node does not read: the map the node has is always the one sent from here."""
         import rosbag
         with rosbag.Bag(self.bag) as bag:
-            for _, message, _ in bag.read_messages(topics=["/segmentation/octomap"]):
-                moved = message
-        moved.header.frame_id = "odom"
-        return moved
+            for _, message, _ in bag.read_messages(topics=["/recorded_octomap"]):
+                message.header.frame_id = frame
+                return message
+        raise Failure("no OctoMap in the bag")
 
     # --- ROS side ------------------------------------------------------------------------
     def ros_setup(self):
@@ -296,14 +298,14 @@ class Soak:
         odom.child_frame_id = "odom"
         odom.transform.rotation.w = 1.0
         self.static_pub.publish(self.TFMessage([odom]))
-        if not hasattr(self, "map_pub"):
-            self.map_pub = self.octomap_publisher()
-        self.map_pub.publish(self.odom_map())
+        self.map_pub.publish(self.recorded_map("odom"))
         time.sleep(1.0)
         proxy = rospy.ServiceProxy("/segmentation/segment", SegmentCloud)
         response = self.call(102, proxy, SegmentCloudRequest(cloud=self.scene_cloud, timeout=2.0), "odom map",
                              {SUCCESS, TRANSFORM_FAILED})
-        self.event("OctoMap in frame 'odom': %s" % (response.message if response else "no response"))
+        self.event("OctoMap in frame 'odom' for 10 s: %s" % (response.message if response else "no response"))
+        self.wait_wall(10.0)
+        self.map_pub.publish(self.recorded_map("map"))
 
     def octomap_publisher(self):
         # The node's OctoMap type is octomap_msgs/Octomap, which Debian does not package: the bag's
@@ -311,8 +313,8 @@ class Soak:
         import rosbag
         import rospy
         with rosbag.Bag(self.bag) as bag:
-            for _, message, _ in bag.read_messages(topics=["/segmentation/octomap"]):
-                return rospy.Publisher("/segmentation/octomap", type(message), queue_size=1)
+            for _, message, _ in bag.read_messages(topics=["/recorded_octomap"]):
+                return rospy.Publisher("/segmentation/octomap", type(message), queue_size=1, latch=True)
         raise Failure("no OctoMap in the bag")
 
     def drop_tf(self, seconds):
@@ -397,6 +399,8 @@ class Soak:
             subprocess.run(["rosparam", "set", "/segmentation/" + name, value], check=True)
         self.start("node", [os.path.join(self.tools, "segmentation_node"), "__name:=segmentation"])
         self.ros_setup()
+        self.map_pub = self.octomap_publisher()  # latched, like octomap_server
+        self.map_pub.publish(self.recorded_map("map"))
         threading.Thread(target=self.tf_loop, daemon=True).start()
         self.start_player()
         self.log("node pid %d, master port %d, bag played at %gx in a loop" % (self.processes["node"].pid, port,
