@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <iomanip>
+#include <sstream>
 #include <string>
 
 #include <Eigen/Geometry>
 
+#include "symmetry_segmentation/point_validity.h"
 #include "symmetry_segmentation/segmentation_output.h"
 
 namespace symmetry_segmentation {
@@ -14,6 +17,7 @@ namespace {
 
 constexpr double kPlaneThickness = 0.002;  // m
 constexpr double kArrowLength = 0.1;       // m
+constexpr float kObjectListHeight = 0.2f;  // m above the highest point
 
 geometry_msgs::Point toPoint(const Eigen::Vector3f& v) {
   geometry_msgs::Point p;
@@ -121,7 +125,41 @@ visualization_msgs::MarkerArray symmetryMarkers(const Cloud& cloud, const Segmen
     text.text = std::to_string(id);
     markers.markers.push_back(text);
   }
+
+  // The object list (rviz has no list display): one text, centred above the whole cloud.
+  Eigen::AlignedBox3f scene_box;
+  for (const auto& p : cloud.points) {
+    if (isUsablePoint(p)) scene_box.extend(p.getVector3fMap());
+  }
+  if (!scene_box.isEmpty()) {
+    const Eigen::Vector3f centre = scene_box.center();
+    auto list = baseMarker(header, "object_list", 0, visualization_msgs::Marker::TEXT_VIEW_FACING);
+    list.pose.position = toPoint(Eigen::Vector3f(centre.x(), centre.y(), scene_box.max().z() + kObjectListHeight));
+    list.scale.z = 0.02;  // text height
+    list.color.r = list.color.g = list.color.b = list.color.a = 1.0f;
+    list.text = objectListText(cloud, result);
+    markers.markers.push_back(list);
+  }
   return markers;
+}
+
+std::string objectListText(const Cloud& cloud, const SegmentationResult& result) {
+  std::ostringstream text;
+  text << result.segments.size() << (result.segments.size() == 1 ? " object" : " objects");
+  text << std::fixed;
+  for (std::size_t s = 0; s < result.segments.size(); ++s) {
+    const Segment& segment = result.segments[s];
+    std::size_t points = 0;
+    for (int index : segment.indices) {
+      if (index >= 0 && static_cast<std::size_t>(index) < cloud.size() && isUsablePoint(cloud[index])) ++points;
+    }
+    text << "\n" << (s + 1) << ": " << points << " points";
+    if (segment.scores) {
+      text << std::setprecision(3) << ", occlusion " << segment.scores->occlusion << ", smoothness "
+           << segment.scores->smoothness;
+    }
+  }
+  return text.str();
 }
 
 }  // namespace symmetry_segmentation

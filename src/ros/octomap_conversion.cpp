@@ -83,4 +83,47 @@ OctomapMessage fullMessageFromTree(const octomap::AbstractOcTree& tree) {
   return message;
 }
 
+std::shared_ptr<octomap::OcTree> resampleOccupancy(const octomap::OcTree& source, const Eigen::Isometry3d& source_to_target,
+                                                   const Eigen::AlignedBox3d& region, std::size_t max_voxels) {
+  const double resolution = source.getResolution();
+  auto target = std::make_shared<octomap::OcTree>(resolution);
+  target->setOccupancyThres(source.getOccupancyThres());
+  target->setProbHit(source.getProbHit());
+  target->setProbMiss(source.getProbMiss());
+  target->setClampingThresMin(source.getClampingThresMin());
+  target->setClampingThresMax(source.getClampingThresMax());
+  if (region.isEmpty() || !region.min().allFinite() || !region.max().allFinite()) {
+    throw InputError("cannot move an OctoMap into another frame over an empty or non-finite region");
+  }
+  octomap::OcTreeKey low, high;
+  if (!target->coordToKeyChecked(octomap::point3d(region.min().x(), region.min().y(), region.min().z()), low) ||
+      !target->coordToKeyChecked(octomap::point3d(region.max().x(), region.max().y(), region.max().z()), high)) {
+    throw InputError("region for the OctoMap lies outside the volume an OctoMap can represent");
+  }
+  const std::size_t voxels = (static_cast<std::size_t>(high[0]) - low[0] + 1) *
+                             (static_cast<std::size_t>(high[1]) - low[1] + 1) * (static_cast<std::size_t>(high[2]) - low[2] + 1);
+  if (voxels > max_voxels) {
+    throw InputError("moving the OctoMap into the processing frame needs " + std::to_string(voxels) +
+                     " voxels around the cloud, more than " + std::to_string(max_voxels));
+  }
+  const Eigen::Isometry3d target_to_source = source_to_target.inverse();
+  octomap::OcTreeKey key;
+  for (unsigned x = low[0]; x <= high[0]; ++x) {
+    for (unsigned y = low[1]; y <= high[1]; ++y) {
+      for (unsigned z = low[2]; z <= high[2]; ++z) {
+        key[0] = static_cast<octomap::key_type>(x);
+        key[1] = static_cast<octomap::key_type>(y);
+        key[2] = static_cast<octomap::key_type>(z);
+        const octomap::point3d centre = target->keyToCoord(key);
+        const Eigen::Vector3d in_source = target_to_source * Eigen::Vector3d(centre.x(), centre.y(), centre.z());
+        const octomap::OcTreeNode* node = source.search(in_source.x(), in_source.y(), in_source.z());
+        if (node) target->setNodeValue(key, node->getLogOdds(), true);
+      }
+    }
+  }
+  target->updateInnerOccupancy();
+  target->prune();
+  return target;
+}
+
 }  // namespace symmetry_segmentation

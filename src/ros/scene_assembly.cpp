@@ -2,6 +2,7 @@
 
 #include "symmetry_segmentation/SegmentCloud.h"
 #include "symmetry_segmentation/errors.h"
+#include "symmetry_segmentation/point_validity.h"
 #include "symmetry_segmentation/ros/cloud_conversion.h"
 
 namespace symmetry_segmentation {
@@ -30,7 +31,19 @@ Scene assembleScene(const sensor_msgs::PointCloud2& cloud, const SceneInputs& in
   if (inputs.sensor_origin) scene.sensor_origins.push_back(*inputs.sensor_origin);
   if (inputs.occupancy) {
     scene.occupancy = inputs.occupancy;
-  } else if (!inputs.sensor_origin) {
+  } else if (inputs.occupancy_for_region) {
+    Eigen::AlignedBox3d box;
+    for (const auto& p : scene.cloud->points) {
+      if (isUsablePoint(p)) box.extend(p.getVector3fMap().cast<double>());
+    }
+    const Eigen::Vector3d margin = Eigen::Vector3d::Constant(kMapMargin);
+    try {
+      scene.occupancy = inputs.occupancy_for_region(Eigen::AlignedBox3d(box.min() - margin, box.max() + margin));
+    } catch (const InputError& error) {
+      throw RequestError(Response::INVALID_INPUT, error.what());
+    }
+  }
+  if (!scene.occupancy && !inputs.sensor_origin) {
     throw RequestError(Response::NO_OCCUPANCY,
                        "no OctoMap received, and no sensor frame or cloud viewpoint to ray-cast one from");
   }

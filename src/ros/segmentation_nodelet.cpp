@@ -10,6 +10,7 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include "symmetry_segmentation/errors.h"
+#include "symmetry_segmentation/ros/cloud_conversion.h"
 #include "symmetry_segmentation/ros/marker_conversion.h"
 #include "symmetry_segmentation/ros/octomap_conversion.h"
 #include "symmetry_segmentation/ros/parameters.h"
@@ -21,6 +22,8 @@ namespace symmetry_segmentation {
 
 namespace {
 using Response = SegmentCloud::Response;
+
+constexpr double kTimeJumpTolerance = 0.5;  // s: smaller jumps back are not acted on
 
 // Waits for a transform against the wall clock: with use_sim_time a stopped player stops the
 // clock, and tf2's own timeout (in ROS time) would then never expire.
@@ -42,8 +45,26 @@ SegmentationNodelet::~SegmentationNodelet() {
     stopping_ = true;
   }
   queue_changed_.notify_all();
+  {
+    std::lock_guard<std::mutex> lock(inputs_mutex_);  // a waiting ~segment call sees stopping_
+  }
   cloud_arrived_.notify_all();
   if (worker_.joinable()) worker_.join();
+  // Callbacks may still be running on other threads while members are destroyed (in reverse
+  // order of declaration). Stop every source of callbacks first, let ~segment calls in progress
+  // finish (stopping the spinner joins its threads), and take the tf listener's thread down
+  // before the filter it feeds: that thread calls into the filter, whose mutexes must not be
+  // gone (a boost::lock_error otherwise).
+  service_.shutdown();
+  if (service_spinner_) service_spinner_->stop();
+  reconfigure_server_.reset();
+  {
+    std::lock_guard<std::mutex> lock(subscription_mutex_);
+    cloud_subscriber_.shutdown();
+  }
+  octomap_subscriber_.shutdown();
+  tf_listener_.reset();
+  tf_filter_.reset();
 }
 
 void SegmentationNodelet::loadParameters() {
@@ -59,6 +80,16 @@ void SegmentationNodelet::loadParameters() {
   pnh.param<std::string>("fixed_frame", fixed_frame_, "");
   pnh.param<std::string>("sensor_frame", sensor_frame_, "");
   pnh.param("transform_timeout", transform_timeout_, 0.1);
+  pnh.param("max_input_points", max_input_points_, 3000000);
+  pnh.param("service_threads", service_threads_, 2);
+  if (service_threads_ < 1) {
+    NODELET_ERROR("~service_threads %d is less than 1; using 1", service_threads_);
+    service_threads_ = 1;
+  }
+  if (max_input_points_ < 0) {
+    NODELET_ERROR("~max_input_points %d is negative; using 0 (no limit)", max_input_points_);
+    max_input_points_ = 0;
+  }
 
   SegmentationConfig config;
   std::vector<std::string> errors;
@@ -93,14 +124,19 @@ void SegmentationNodelet::onInit() {
   tf_filter_->registerFailureCallback(
       boost::bind(&SegmentationNodelet::transformFailureCallback, this, boost::placeholders::_1, boost::placeholders::_2));
 
-  objects_publisher_ = pnh.advertise<SegmentedObjectArray>("objects", 1);
-  labelled_publisher_ = pnh.advertise<sensor_msgs::PointCloud2>("segmented_cloud", 1);
-  markers_publisher_ = pnh.advertise<visualization_msgs::MarkerArray>("symmetry_markers", 1);
-  // The service runs on the multi-threaded queue so a long segmentation never blocks the
-  // subscriber callbacks.
-  ros::NodeHandle& mt_pnh = getMTPrivateNodeHandle();
-  service_ = mt_pnh.advertiseService("segment", &SegmentationNodelet::segmentService, this);
-  cloud_subscriber_ = pnh.subscribe("input", 1, &SegmentationNodelet::cloudCallback, this);
+  // Lazy like pcl_ros nodelets: ~input is subscribed only while someone listens (continuous).
+  const ros::SubscriberStatusCallback connection = boost::bind(&SegmentationNodelet::updateInputSubscription, this);
+  objects_publisher_ = pnh.advertise<SegmentedObjectArray>("objects", 1, connection, connection);
+  labelled_publisher_ = pnh.advertise<sensor_msgs::PointCloud2>("segmented_cloud", 1, connection, connection);
+  markers_publisher_ = pnh.advertise<visualization_msgs::MarkerArray>("symmetry_markers", 1, connection, connection);
+  // The service runs on threads of its own, so long segmentations never block the subscriber
+  // callbacks (nor other nodelets of the manager).
+  ros::NodeHandle service_nh(pnh);
+  service_nh.setCallbackQueue(&service_queue_);
+  service_ = service_nh.advertiseService("segment", &SegmentationNodelet::segmentService, this);
+  service_spinner_ = std::make_unique<ros::AsyncSpinner>(static_cast<uint32_t>(service_threads_), &service_queue_);
+  service_spinner_->start();
+  updateInputSubscription();
   octomap_subscriber_ = pnh.subscribe("octomap", 1, &SegmentationNodelet::octomapCallback, this);
   worker_ = std::thread(&SegmentationNodelet::workerLoop, this);  // idles in on_demand mode
 
@@ -155,6 +191,7 @@ void SegmentationNodelet::reconfigure(symmetry_segmentation::LiveParametersConfi
     live.mode = continuous() ? "continuous" : "on_demand";
   }
   continuous_ = live.mode == "continuous";
+  updateInputSubscription();
   NODELET_INFO("reconfigured: mode %s, voxel_size %g, s_occl %g, s_smooth %g, lambda_smooth %g, lambda_sym %g",
                live.mode.c_str(), live.voxel_size, live.s_occl, live.s_smooth, live.lambda_smooth, live.lambda_sym);
 }
@@ -170,7 +207,53 @@ std::string SegmentationNodelet::processingFrame(const std::string& cloud_frame)
   return map_.tree ? map_.frame : cloud_frame;
 }
 
+void SegmentationNodelet::updateInputSubscription() {
+  std::lock_guard<std::mutex> lock(subscription_mutex_);
+  if (stopping_) return;
+  const bool wanted = !continuous() || hasOutputSubscribers() || latest_waiters_ > 0;
+  if (wanted && !cloud_subscriber_) {
+    cloud_subscriber_ = getPrivateNodeHandle().subscribe("input", 1, &SegmentationNodelet::cloudCallback, this);
+    NODELET_DEBUG("subscribed to %s", cloud_subscriber_.getTopic().c_str());
+  } else if (!wanted && cloud_subscriber_) {
+    NODELET_DEBUG("unsubscribing from %s: nobody listens", cloud_subscriber_.getTopic().c_str());
+    cloud_subscriber_.shutdown();
+  }
+}
+
+void SegmentationNodelet::handleTimeJump() {
+  ros::Duration back;
+  {
+    // Read under the lock: concurrent callers must not see each other's reads out of order.
+    std::lock_guard<std::mutex> lock(time_mutex_);
+    const ros::Time now = ros::Time::now();
+    if (now < last_time_) back = last_time_ - now;
+    last_time_ = now;
+  }
+  // rosbag play's clock jitters back by milliseconds when the player runs late: transforms that
+  // little ahead do no harm (tf2's listener still clears its buffer on those by itself).
+  if (back <= ros::Duration(kTimeJumpTolerance)) return;
+  NODELET_WARN("ROS time moved backwards by %.3f s (restarted bag?): clearing the tf buffer", back.toSec());
+  tf_buffer_->clear();
+  tf_filter_->clear();
+  {
+    // A cloud waiting from before the jump is stamped in the new "future": no transform for it.
+    std::lock_guard<std::mutex> lock(queue_mutex_);
+    pending_cloud_.reset();
+  }
+  std::lock_guard<std::mutex> lock(moved_map_mutex_);
+  moved_map_ = MovedMap();
+}
+
 void SegmentationNodelet::cloudCallback(const sensor_msgs::PointCloud2ConstPtr& cloud) {
+  handleTimeJump();
+  CloudCheckOptions check;
+  check.max_points = static_cast<std::size_t>(max_input_points_);
+  const std::string problem = cloudMessageProblem(*cloud, check);
+  if (!problem.empty()) {
+    // Not cached for ~segment and not segmented: nothing is published for it.
+    NODELET_WARN_THROTTLE(5.0, "ignoring cloud on ~input: %s", problem.c_str());
+    return;
+  }
   {
     std::lock_guard<std::mutex> lock(inputs_mutex_);
     latest_cloud_ = cloud;
@@ -207,7 +290,9 @@ void SegmentationNodelet::transformFailureCallback(const sensor_msgs::PointCloud
 }
 
 void SegmentationNodelet::octomapCallback(const OctomapMessage::ConstPtr& message) {
+  handleTimeJump();
   try {
+    if (message->header.frame_id.empty()) throw InputError("header.frame_id is empty: the map's frame is unknown");
     auto tree = occupancyFromMessage(*message);
     std::lock_guard<std::mutex> lock(inputs_mutex_);
     map_.tree = std::move(tree);
@@ -228,7 +313,9 @@ void SegmentationNodelet::workerLoop() {
     }
     if (!continuous() || !hasOutputSubscribers()) continue;
     const Outcome outcome = process(*cloud, ros::Duration(transform_timeout_), std::nullopt);
-    if (outcome.status != Response::SUCCESS) {
+    if (outcome.status == Response::INVALID_INPUT) {
+      NODELET_WARN_THROTTLE(5.0, "cloud not segmented: %s", outcome.message.c_str());
+    } else if (outcome.status != Response::SUCCESS) {
       NODELET_ERROR_THROTTLE(5.0, "segmentation failed (status %d): %s", outcome.status, outcome.message.c_str());
     }
   }
@@ -240,6 +327,10 @@ SegmentationNodelet::Outcome SegmentationNodelet::process(const sensor_msgs::Poi
   Outcome outcome;
   try {
     Stopwatch prepare_watch;
+    CloudCheckOptions check;
+    check.max_points = static_cast<std::size_t>(max_input_points_);
+    const std::string problem = cloudMessageProblem(cloud, check);
+    if (!problem.empty()) throw RequestError(Response::INVALID_INPUT, problem);
     const std::string frame = processingFrame(cloud.header.frame_id);
     SceneInputs inputs;
     inputs.region_of_interest = roi;
@@ -252,9 +343,25 @@ SegmentationNodelet::Outcome SegmentationNodelet::process(const sensor_msgs::Poi
       }
       inputs.cloud_to_processing = tf2::transformToEigen(tf_buffer_->lookupTransform(frame, cloud.header.frame_id, stamp));
     }
+    CachedMap map;
     {
       std::lock_guard<std::mutex> lock(inputs_mutex_);
-      if (map_.tree && map_.frame == frame) inputs.occupancy = map_.tree;
+      map = map_;
+    }
+    if (map.tree && map.frame == frame) {
+      inputs.occupancy = map.tree;
+    } else if (map.tree) {
+      // A map in another frame is moved into the processing frame with the transform at the
+      // cloud's stamp (where the world was relative to the processing frame when it was seen).
+      std::string error;
+      if (!waitForTransform(*tf_buffer_, frame, map.frame, stamp, timeout, &error)) {
+        throw RequestError(Response::TRANSFORM_FAILED, "no transform from the OctoMap's frame '" + map.frame +
+                                                           "' to processing frame '" + frame + "': " + error);
+      }
+      const Eigen::Isometry3d map_to_frame = tf2::transformToEigen(tf_buffer_->lookupTransform(frame, map.frame, stamp));
+      inputs.occupancy_for_region = [this, map, frame, map_to_frame](const Eigen::AlignedBox3d& box) {
+        return movedMap(map.tree, frame, map_to_frame, box);
+      };
     }
     {
       if (!sensor_frame_.empty()) {
@@ -318,16 +425,59 @@ SegmentationNodelet::Outcome SegmentationNodelet::process(const sensor_msgs::Poi
   return outcome;
 }
 
+std::shared_ptr<octomap::OcTree> SegmentationNodelet::movedMap(const std::shared_ptr<octomap::OcTree>& map,
+                                                               const std::string& frame,
+                                                               const Eigen::Isometry3d& map_to_frame,
+                                                               const Eigen::AlignedBox3d& box) {
+  // One entry, computed under the lock: concurrent calls for the same map wait for it once.
+  std::lock_guard<std::mutex> lock(moved_map_mutex_);
+  if (moved_map_.tree && moved_map_.source == map && moved_map_.frame == frame &&
+      moved_map_.source_to_frame.matrix() == map_to_frame.matrix() && moved_map_.region.contains(box)) {
+    return moved_map_.tree;
+  }
+  moved_map_ = MovedMap();  // the old copy goes before the new one is built
+  // Some slack, so the next cloud of a slightly different extent still fits.
+  const Eigen::Vector3d slack = Eigen::Vector3d::Constant(kMapMargin);
+  const Eigen::AlignedBox3d region(box.min() - slack, box.max() + slack);
+  Stopwatch watch;
+  auto tree = resampleOccupancy(*map, map_to_frame, region);
+  NODELET_INFO("moved the OctoMap into frame '%s' over %.2f x %.2f x %.2f m in %.0f ms", frame.c_str(),
+               region.sizes().x(), region.sizes().y(), region.sizes().z(), watch.elapsedMs());
+  moved_map_ = MovedMap{map, frame, map_to_frame, region, tree};
+  return tree;
+}
+
 bool SegmentationNodelet::segmentService(SegmentCloud::Request& request, SegmentCloud::Response& response) {
+  if (stopping_) return false;
+  handleTimeJump();
   sensor_msgs::PointCloud2ConstPtr cloud;
   const bool use_latest = request.cloud.fields.empty() && request.cloud.data.empty() &&
                           static_cast<std::size_t>(request.cloud.width) * request.cloud.height == 0;
   const double timeout = std::max(0.0, std::isfinite(request.timeout) ? request.timeout : 0.0);
   if (use_latest) {
-    std::unique_lock<std::mutex> lock(inputs_mutex_);
-    cloud_arrived_.wait_for(lock, std::chrono::duration<double>(timeout),
-                            [this] { return latest_cloud_ != nullptr || stopping_; });
-    cloud = latest_cloud_;
+    {
+      std::lock_guard<std::mutex> lock(inputs_mutex_);
+      cloud = latest_cloud_;
+    }
+    if (!cloud && timeout > 0.0) {
+      // Continuous mode without output subscribers does not subscribe ~input: do for the wait.
+      {
+        std::lock_guard<std::mutex> lock(subscription_mutex_);
+        ++latest_waiters_;
+      }
+      updateInputSubscription();
+      {
+        std::unique_lock<std::mutex> lock(inputs_mutex_);
+        cloud_arrived_.wait_for(lock, std::chrono::duration<double>(timeout),
+                                [this] { return latest_cloud_ != nullptr || stopping_; });
+        cloud = latest_cloud_;
+      }
+      {
+        std::lock_guard<std::mutex> lock(subscription_mutex_);
+        --latest_waiters_;
+      }
+      updateInputSubscription();
+    }
     if (!cloud) {
       response.status = timeout > 0.0 ? Response::TIMEOUT : Response::NO_CLOUD;
       response.message = timeout > 0.0 ? "no cloud arrived on ~input within " + std::to_string(timeout) + " s"
@@ -336,7 +486,7 @@ bool SegmentationNodelet::segmentService(SegmentCloud::Request& request, Segment
       return true;
     }
   } else {
-    cloud = boost::make_shared<sensor_msgs::PointCloud2>(request.cloud);
+    cloud = boost::make_shared<sensor_msgs::PointCloud2>(std::move(request.cloud));  // no copy of a large cloud
   }
   std::optional<AxisAlignedBox> roi;
   if (request.use_roi) {

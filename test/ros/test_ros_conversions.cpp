@@ -103,6 +103,165 @@ TEST(CloudConversion, EmptyOrFieldlessCloudsAreInputErrors) {
   EXPECT_THROW(ss::sceneFromCloudMessage(short_data), ss::InputError);
 }
 
+// The problem text for a message, with the frame id required and an optional point limit.
+std::string problemOf(const sensor_msgs::PointCloud2& message, std::size_t max_points = 0) {
+  ss::CloudCheckOptions options;
+  options.max_points = max_points;
+  return ss::cloudMessageProblem(message, options);
+}
+
+// True when the problem names every one of `words`.
+::testing::AssertionResult names(const std::string& problem, std::initializer_list<const char*> words) {
+  for (const char* word : words) {
+    if (problem.find(word) == std::string::npos) {
+      return ::testing::AssertionFailure() << "'" << problem << "' does not mention '" << word << "'";
+    }
+  }
+  return ::testing::AssertionSuccess();
+}
+
+TEST(CloudValidation, AWellFormedCloudHasNoProblem) {
+  EXPECT_EQ(problemOf(xyzMessage({{1, 2, 3}, {4, 5, 6}})), "");
+  ss::Cloud cloud;
+  cloud.push_back(point(1, 0, 0));
+  sensor_msgs::PointCloud2 full;
+  pcl::toROSMsg(cloud, full);
+  full.header.frame_id = "map";
+  EXPECT_EQ(problemOf(full), "");
+  // An organised cloud with padded rows is fine too.
+  sensor_msgs::PointCloud2 padded = xyzMessage({{1, 2, 3}, {4, 5, 6}});
+  padded.height = 2;
+  padded.width = 1;
+  padded.row_step = padded.point_step + 8;
+  padded.data.assign(2 * padded.row_step, 0);
+  EXPECT_EQ(problemOf(padded), "");
+}
+
+TEST(CloudValidation, EmptyFrameIdIsAProblemOnlyWhenRequired) {
+  sensor_msgs::PointCloud2 message = xyzMessage({{1, 2, 3}});
+  message.header.frame_id.clear();
+  EXPECT_TRUE(names(problemOf(message), {"frame_id", "empty"}));
+  ss::CloudCheckOptions layout_only;
+  layout_only.require_frame = false;
+  EXPECT_EQ(ss::cloudMessageProblem(message, layout_only), "");
+}
+
+TEST(CloudValidation, EachInconsistentSizeIsNamed) {
+  EXPECT_TRUE(names(problemOf(xyzMessage({})), {"empty"}));
+
+  sensor_msgs::PointCloud2 short_data = xyzMessage({{1, 2, 3}, {4, 5, 6}});
+  short_data.data.resize(short_data.data.size() - 1);
+  EXPECT_TRUE(names(problemOf(short_data), {"data holds", "row_step"}));
+  EXPECT_THROW(ss::sceneFromCloudMessage(short_data), ss::InputError);
+
+  sensor_msgs::PointCloud2 long_data = xyzMessage({{1, 2, 3}, {4, 5, 6}});
+  long_data.data.resize(long_data.data.size() + 16);
+  EXPECT_TRUE(names(problemOf(long_data), {"data holds"}));
+
+  // Width grown without data: width * point_step no longer fits row_step.
+  sensor_msgs::PointCloud2 wide = xyzMessage({{1, 2, 3}, {4, 5, 6}});
+  wide.width = 3;
+  EXPECT_TRUE(names(problemOf(wide), {"row_step", "smaller than width"}));
+  EXPECT_THROW(ss::sceneFromCloudMessage(wide), ss::InputError);
+
+  sensor_msgs::PointCloud2 zero_step = xyzMessage({{1, 2, 3}});
+  zero_step.point_step = 0;
+  zero_step.row_step = 0;
+  zero_step.data.clear();
+  EXPECT_TRUE(names(problemOf(zero_step), {"point_step is 0"}));
+
+  // A field reaching past the end of a point (z at offset 8 needs 12 bytes).
+  sensor_msgs::PointCloud2 narrow = xyzMessage({{1, 2, 3}});
+  narrow.point_step = 10;
+  narrow.row_step = 10;
+  narrow.data.resize(10);
+  EXPECT_TRUE(names(problemOf(narrow), {"'z'", "beyond point_step 10"}));
+  EXPECT_THROW(ss::sceneFromCloudMessage(narrow), ss::InputError);
+
+  sensor_msgs::PointCloud2 big_endian = xyzMessage({{1, 2, 3}});
+  big_endian.is_bigendian = true;
+  EXPECT_TRUE(names(problemOf(big_endian), {"big-endian"}));
+
+  // The sizes are multiplied in 64 bits: no wrap-around makes a huge cloud look consistent.
+  sensor_msgs::PointCloud2 overflow = xyzMessage({{1, 2, 3}});
+  overflow.width = 1u << 31;
+  overflow.height = 4;
+  overflow.row_step = 0;
+  EXPECT_TRUE(names(problemOf(overflow), {"row_step"}));
+}
+
+TEST(CloudValidation, XyzFieldsMustBeSingleFloats) {
+  sensor_msgs::PointCloud2 no_y = xyzMessage({{1, 2, 3}});
+  no_y.fields.erase(no_y.fields.begin() + 1);
+  EXPECT_TRUE(names(problemOf(no_y), {"no 'y' field"}));
+
+  sensor_msgs::PointCloud2 doubles = xyzMessage({{1, 2, 3}});
+  doubles.fields[0].datatype = sensor_msgs::PointField::FLOAT64;  // x: 8 bytes at 0, still inside the point
+  EXPECT_TRUE(names(problemOf(doubles), {"'x'", "FLOAT32"}));
+  EXPECT_THROW(ss::sceneFromCloudMessage(doubles), ss::InputError);
+
+  sensor_msgs::PointCloud2 integers = xyzMessage({{1, 2, 3}});
+  integers.fields[2].datatype = sensor_msgs::PointField::INT32;
+  EXPECT_TRUE(names(problemOf(integers), {"'z'", "FLOAT32"}));
+
+  sensor_msgs::PointCloud2 counted = xyzMessage({{1, 2, 3}});
+  counted.fields[0].count = 2;  // x then y: ends within the point
+  EXPECT_TRUE(names(problemOf(counted), {"'x'", "count 2"}));
+
+  sensor_msgs::PointCloud2 unknown = xyzMessage({{1, 2, 3}});
+  unknown.fields[1].datatype = 42;
+  EXPECT_TRUE(names(problemOf(unknown), {"'y'", "unknown datatype 42"}));
+}
+
+TEST(CloudValidation, PointLimit) {
+  const auto message = xyzMessage({{1, 2, 3}, {4, 5, 6}, {7, 8, 9}});
+  EXPECT_EQ(problemOf(message, 3), "");
+  EXPECT_TRUE(names(problemOf(message, 2), {"3 points", "limit of 2", "max_input_points"}));
+}
+
+TEST(CloudValidation, NormalsOfAnotherTypeAreEstimatedNotReadAsZero) {
+  ss::Cloud cloud;
+  cloud.push_back(point(1, 0, 0, 0, 1, 0));
+  sensor_msgs::PointCloud2 message;
+  pcl::toROSMsg(cloud, message);
+  for (auto& field : message.fields) {
+    if (field.name == "normal_y") field.datatype = sensor_msgs::PointField::INT32;
+  }
+  EXPECT_FALSE(ss::sceneFromCloudMessage(message).has_normals);
+}
+
+TEST(SceneAssembly, LayoutProblemsAreInvalidInput) {
+  ss::SceneInputs inputs;
+  inputs.sensor_origin = Eigen::Vector3f::Zero();
+  sensor_msgs::PointCloud2 wide = xyzMessage({{0, 0, 1}});
+  wide.width = 2;
+  try {
+    ss::assembleScene(wide, inputs);
+    ADD_FAILURE() << "accepted a cloud whose row is larger than its data";
+  } catch (const ss::RequestError& error) {
+    EXPECT_EQ(error.status(), Response::INVALID_INPUT);
+    EXPECT_TRUE(names(error.what(), {"row_step"}));
+  }
+}
+
+TEST(SceneAssembly, MapFromAnotherFrameIsAskedForAroundTheCloud) {
+  ss::SceneInputs inputs;
+  Eigen::AlignedBox3d asked;
+  auto tree = std::make_shared<octomap::OcTree>(0.01);
+  inputs.occupancy_for_region = [&](const Eigen::AlignedBox3d& box) {
+    asked = box;
+    return tree;
+  };
+  const ss::Scene scene = ss::assembleScene(xyzMessage({{0, 0, 1}, {1, 2, 3}, {kNaN, 0, 0}}), inputs);
+  EXPECT_EQ(scene.occupancy, tree);
+  EXPECT_TRUE(asked.min().isApprox(Eigen::Vector3d(-ss::kMapMargin, -ss::kMapMargin, 1 - ss::kMapMargin)));
+  EXPECT_TRUE(asked.max().isApprox(Eigen::Vector3d(1 + ss::kMapMargin, 2 + ss::kMapMargin, 3 + ss::kMapMargin)));
+  inputs.occupancy_for_region = [](const Eigen::AlignedBox3d&) -> std::shared_ptr<octomap::OcTree> {
+    throw ss::InputError("too large");
+  };
+  EXPECT_EQ(statusOf(xyzMessage({{0, 0, 1}}), inputs), Response::INVALID_INPUT);
+}
+
 TEST(CloudConversion, TransformMovesPointsAndRotatesNormals) {
   ss::Cloud cloud;
   cloud.push_back(point(1, 0, 0, 1, 0, 0));
@@ -249,7 +408,7 @@ TEST(MarkerConversion, DeleteAllThenPlanePatchArrowAndText) {
   std_msgs::Header header;
   header.frame_id = "map";
   const auto markers = ss::symmetryMarkers(cloud, result, header);
-  ASSERT_EQ(markers.markers.size(), 4u);
+  ASSERT_EQ(markers.markers.size(), 5u);
   EXPECT_EQ(markers.markers[0].action, visualization_msgs::Marker::DELETEALL);
   const auto& plane = markers.markers[1];
   EXPECT_EQ(plane.type, visualization_msgs::Marker::CUBE);
@@ -274,10 +433,32 @@ TEST(MarkerConversion, DeleteAllThenPlanePatchArrowAndText) {
   EXPECT_EQ(text.type, visualization_msgs::Marker::TEXT_VIEW_FACING);
   EXPECT_EQ(text.text, "1");
   EXPECT_GT(text.pose.position.z, 3.025);
+  // Last: the object list above the scene.
+  const auto& list = markers.markers[4];
+  EXPECT_EQ(list.ns, "object_list");
+  EXPECT_EQ(list.type, visualization_msgs::Marker::TEXT_VIEW_FACING);
+  EXPECT_EQ(list.text, "1 object\n1: " + std::to_string(cloud.size()) + " points");
+  EXPECT_NEAR(list.pose.position.x, 1.0, 1e-4);
+  EXPECT_NEAR(list.pose.position.y, 2.0, 1e-4);
+  EXPECT_NEAR(list.pose.position.z, 3.025 + 0.2, 1e-4);
 
   const auto none = ss::symmetryMarkers(cloud, ss::SegmentationResult{}, header);
-  ASSERT_EQ(none.markers.size(), 1u);
+  ASSERT_EQ(none.markers.size(), 2u);
   EXPECT_EQ(none.markers[0].action, visualization_msgs::Marker::DELETEALL);
+  EXPECT_EQ(none.markers[1].text, "0 objects");
+  EXPECT_EQ(ss::symmetryMarkers(ss::Cloud(), ss::SegmentationResult{}, header).markers.size(), 1u);
+}
+
+TEST(MarkerConversion, ObjectListCountsUsablePointsAndShowsScores) {
+  ss::Cloud cloud = boxCloud();
+  cloud[0].x = kNaN;
+  ss::SegmentationResult result;
+  result.segments.resize(2);
+  result.segments[0].indices = {0, 1, 2, 3};
+  result.segments[0].scores = ss::SegmentScores{0.9912f, 0.0123f};
+  result.segments[1].indices = {4, 5};
+  EXPECT_EQ(ss::objectListText(cloud, result),
+            "2 objects\n1: 3 points, occlusion 0.991, smoothness 0.012\n2: 2 points");
 }
 
 TEST(Parameters, NestedNamespacesSetTheSameKeysAsTheYamlFile) {

@@ -1,7 +1,10 @@
 // The octomap_msgs/Octomap stand-in: identity on the wire, serialisation, tree conversions.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <memory>
+
+#include <Eigen/Geometry>
 
 #include <boost/make_shared.hpp>
 #include <octomap/ColorOcTree.h>
@@ -149,4 +152,52 @@ TEST(OctomapConversion, UnknownIdsEmptyDataAndBadResolutionAreErrors) {
   message = ss::fullMessageFromTree(tree);
   message.data.resize(message.data.size() / 2);
   EXPECT_THROW(ss::occupancyFromMessage(message), ss::InputError);
+}
+
+TEST(OctomapConversion, ResampledMapAnswersInTheTargetFrame) {
+  // Source frame "odom"; target frame rotated a quarter turn about z and shifted by whole voxels:
+  // a point p in the target is source_to_target.inverse() * p in the source.
+  auto source = std::make_shared<octomap::OcTree>(0.02);
+  fillScene(*source);
+  Eigen::Isometry3d source_to_target = Eigen::Isometry3d::Identity();
+  source_to_target.rotate(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
+  source_to_target.pretranslate(Eigen::Vector3d(1.0, -0.4, 0.2));
+  const Eigen::AlignedBox3d region(Eigen::Vector3d(0.5, -0.9, 0.0), Eigen::Vector3d(1.5, 0.1, 1.0));
+  const auto moved = ss::resampleOccupancy(*source, source_to_target, region);
+  ASSERT_TRUE(moved);
+  EXPECT_DOUBLE_EQ(moved->getResolution(), 0.02);
+  const ss::OccupancyMap before(source), after(moved);
+  int compared = 0;
+  // Voxel centres (the motion maps them onto source voxel centres, far from any boundary).
+  for (double x = 0.51; x < 1.5; x += 0.06) {
+    for (double y = -0.89; y < 0.1; y += 0.04) {
+      for (double z = 0.01; z < 1.0; z += 0.02) {
+        const Eigen::Vector3d in_target(x, y, z);
+        const Eigen::Vector3d in_source = source_to_target.inverse() * in_target;
+        ASSERT_EQ(after.classify(in_target.cast<float>()), before.classify(in_source.cast<float>()))
+            << "at " << in_target.transpose();
+        ++compared;
+      }
+    }
+  }
+  EXPECT_GT(compared, 10000);
+  // The slab at source z = 0.5 is at target z = 0.7 (voxel centres below).
+  ASSERT_EQ(before.classify({0.01f, 0.01f, 0.51f}), ss::Occupancy::Occupied);
+  EXPECT_EQ(after.classify({0.99f, -0.39f, 0.71f}), ss::Occupancy::Occupied);
+  ASSERT_EQ(before.classify({0.01f, 0.01f, 0.25f}), ss::Occupancy::Free);
+  EXPECT_EQ(after.classify({0.99f, -0.39f, 0.45f}), ss::Occupancy::Free);
+  // Outside the region nothing is copied.
+  ASSERT_EQ(before.classify({0.01f, 0.11f, 0.25f}), ss::Occupancy::Free);  // target (0.89, -0.39, 0.45)
+  const Eigen::AlignedBox3d smaller(Eigen::Vector3d(0.5, -0.9, 0.0), Eigen::Vector3d(0.95, 0.1, 1.0));
+  const ss::OccupancyMap cut(ss::resampleOccupancy(*source, source_to_target, smaller));
+  EXPECT_EQ(cut.classify({0.89f, -0.39f, 0.45f}), ss::Occupancy::Free);
+  EXPECT_EQ(cut.classify({0.99f, -0.39f, 0.45f}), ss::Occupancy::Unknown);  // free in the source, outside
+}
+
+TEST(OctomapConversion, ResamplingRefusesEmptyOrHugeRegions) {
+  octomap::OcTree source(0.01);
+  fillScene(source);
+  EXPECT_THROW(ss::resampleOccupancy(source, Eigen::Isometry3d::Identity(), Eigen::AlignedBox3d()), ss::InputError);
+  const Eigen::AlignedBox3d ten_metres(Eigen::Vector3d::Constant(-5), Eigen::Vector3d::Constant(5));
+  EXPECT_THROW(ss::resampleOccupancy(source, Eigen::Isometry3d::Identity(), ten_metres, 1000000), ss::InputError);
 }

@@ -2,7 +2,10 @@
 // The tests run in order: first without any input, then with a cloud, then with a map.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
+
+#include <Eigen/Geometry>
 
 #include <geometry_msgs/TransformStamped.h>
 #include <dynamic_reconfigure/Reconfigure.h>
@@ -74,6 +77,35 @@ TEST(SegmentService, NanOnlyCloudIsInvalid) {
   const auto srv = call(request);
   EXPECT_EQ(srv.response.status, Response::INVALID_INPUT) << srv.response.message;
   EXPECT_NE(srv.response.message.find("finite"), std::string::npos) << srv.response.message;
+}
+
+TEST(SegmentService, InconsistentCloudsAreInvalidWithTheReason) {
+  // Each broken the way a buggy driver breaks it; the message names what is wrong.
+  ss::SegmentCloud::Request request;
+  request.cloud = ros_test::cloudMessage(*scene().cloud, "map", ros::Time::now());
+  request.cloud.row_step -= 1;  // rows no longer hold width points
+  auto srv = call(request);
+  EXPECT_EQ(srv.response.status, Response::INVALID_INPUT) << srv.response.message;
+  EXPECT_NE(srv.response.message.find("row_step"), std::string::npos) << srv.response.message;
+
+  request.cloud = ros_test::cloudMessage(*scene().cloud, "map", ros::Time::now());
+  request.cloud.data.resize(request.cloud.data.size() / 2);
+  srv = call(request);
+  EXPECT_EQ(srv.response.status, Response::INVALID_INPUT) << srv.response.message;
+  EXPECT_NE(srv.response.message.find("data holds"), std::string::npos) << srv.response.message;
+
+  request.cloud = ros_test::cloudMessage(*scene().cloud, "map", ros::Time::now());
+  for (auto& field : request.cloud.fields) {
+    if (field.name == "z") field.datatype = sensor_msgs::PointField::FLOAT64;
+  }
+  srv = call(request);
+  EXPECT_EQ(srv.response.status, Response::INVALID_INPUT) << srv.response.message;
+  EXPECT_NE(srv.response.message.find("'z'"), std::string::npos) << srv.response.message;
+
+  request.cloud = ros_test::cloudMessage(*scene().cloud, "", ros::Time::now());
+  srv = call(request);
+  EXPECT_EQ(srv.response.status, Response::INVALID_INPUT) << srv.response.message;
+  EXPECT_NE(srv.response.message.find("frame_id"), std::string::npos) << srv.response.message;
 }
 
 TEST(SegmentService, NoOccupancyAndNoSensorFrame) {
@@ -217,6 +249,64 @@ TEST(SegmentService, BadOctomapIsLoggedAndIgnored) {
   const auto srv = call(request);
   ASSERT_EQ(srv.response.status, Response::SUCCESS) << srv.response.message;
   EXPECT_GE(srv.response.objects.objects.size(), 2u);
+}
+
+TEST(SegmentService, OctomapInAnotherFrameIsTransformed) {
+  // The same occupancy, once in "map" (the processing frame) and once expressed in "odom" (a
+  // quarter turn and whole voxels away): with tf map -> odom, the node moves the map into "map"
+  // and finds the same objects; before the transform exists, it says which frame is missing.
+  ros::NodeHandle nh;
+  auto map_pub = nh.advertise<ss::OctomapMessage>("segmentation/octomap", 1, true);
+  ASSERT_TRUE(ros_test::spinUntil([&] { return map_pub.getNumSubscribers() > 0; }, 30));
+  map_pub.publish(ros_test::octomapMessage(*scene().occupancy, "map"));
+  ros::WallDuration(0.5).sleep();
+  ss::SegmentCloud::Request request;
+  request.cloud = ros_test::cloudMessage(*scene().cloud, "map", ros::Time(0));
+  const auto in_map = call(request);
+  ASSERT_EQ(in_map.response.status, Response::SUCCESS) << in_map.response.message;
+  ASSERT_GE(in_map.response.objects.objects.size(), 2u);
+
+  const double resolution = scene().occupancy->getResolution();
+  Eigen::Isometry3d odom_in_map = Eigen::Isometry3d::Identity();  // p_map = odom_in_map * p_odom
+  odom_in_map.rotate(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
+  odom_in_map.pretranslate(resolution * Eigen::Vector3d(40, -20, 8));
+  double min_x, min_y, min_z, max_x, max_y, max_z;
+  scene().occupancy->getMetricMin(min_x, min_y, min_z);
+  scene().occupancy->getMetricMax(max_x, max_y, max_z);
+  Eigen::AlignedBox3d in_odom;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Eigen::Vector3d p(corner & 1 ? max_x : min_x, corner & 2 ? max_y : min_y, corner & 4 ? max_z : min_z);
+    in_odom.extend(odom_in_map.inverse() * p);
+  }
+  const auto odom_tree = ss::resampleOccupancy(*scene().occupancy, odom_in_map.inverse(), in_odom);
+  map_pub.publish(ros_test::octomapMessage(*odom_tree, "odom"));
+  ros::WallDuration(0.5).sleep();
+  const auto no_tf = call(request);
+  EXPECT_EQ(no_tf.response.status, Response::TRANSFORM_FAILED) << no_tf.response.message;
+  EXPECT_NE(no_tf.response.message.find("'odom'"), std::string::npos) << no_tf.response.message;
+
+  tf2_ros::StaticTransformBroadcaster broadcaster;
+  geometry_msgs::TransformStamped transform;
+  transform.header.stamp = ros::Time::now();
+  transform.header.frame_id = "map";
+  transform.child_frame_id = "odom";
+  transform.transform.translation.x = odom_in_map.translation().x();
+  transform.transform.translation.y = odom_in_map.translation().y();
+  transform.transform.translation.z = odom_in_map.translation().z();
+  const Eigen::Quaterniond rotation(odom_in_map.rotation());
+  transform.transform.rotation.x = rotation.x();
+  transform.transform.rotation.y = rotation.y();
+  transform.transform.rotation.z = rotation.z();
+  transform.transform.rotation.w = rotation.w();
+  broadcaster.sendTransform(transform);
+  request.timeout = 2.0;
+  const auto moved = call(request);
+  ASSERT_EQ(moved.response.status, Response::SUCCESS) << moved.response.message;
+  EXPECT_EQ(moved.response.objects.header.frame_id, "map");
+  ASSERT_EQ(moved.response.objects.objects.size(), in_map.response.objects.objects.size());
+  for (std::size_t i = 0; i < moved.response.objects.objects.size(); ++i) {
+    EXPECT_EQ(moved.response.objects.objects[i].indices, in_map.response.objects.objects[i].indices) << "object " << i;
+  }
 }
 
 int main(int argc, char** argv) {

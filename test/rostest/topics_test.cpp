@@ -6,6 +6,7 @@
 #include <set>
 
 #include <pcl/point_types.h>
+#include <ros/master.h>
 #include <tf2_ros/static_transform_broadcaster.h>
 #include <visualization_msgs/MarkerArray.h>
 
@@ -25,6 +26,66 @@ ss::Metrics metricsOf(const ss::Scene& scene, const std::vector<std::vector<int>
 
 }  // namespace
 
+// Nodes the master lists as subscribers of `topic`, other than this test node.
+std::vector<std::string> otherSubscribers(const std::string& topic) {
+  XmlRpc::XmlRpcValue args, result, payload;
+  args[0] = ros::this_node::getName();
+  std::vector<std::string> nodes;
+  if (!ros::master::execute("getSystemState", args, result, payload, true)) {
+    ADD_FAILURE() << "getSystemState failed";
+    return nodes;
+  }
+  XmlRpc::XmlRpcValue& subscribers = payload[1];
+  for (int i = 0; i < subscribers.size(); ++i) {
+    if (static_cast<std::string>(subscribers[i][0]) != topic) continue;
+    for (int j = 0; j < subscribers[i][1].size(); ++j) {
+      const std::string node = subscribers[i][1][j];
+      if (node != ros::this_node::getName()) nodes.push_back(node);
+    }
+  }
+  return nodes;
+}
+
+TEST(SegmentationTopics, InputIsSubscribedOnlyWhileSomeoneListens) {
+  // Runs first: nobody has subscribed an output yet. The node (lazy, like pcl_ros nodelets)
+  // must not even receive clouds then, so it cannot segment them.
+  ros::NodeHandle nh;
+  // The reconfigure service is the last thing the nodelet sets up.
+  ASSERT_TRUE(ros::service::waitForService("segmentation/set_parameters", ros::Duration(30)));
+  auto cloud_pub = nh.advertise<sensor_msgs::PointCloud2>("segmentation/input", 1);
+  auto map_pub = nh.advertise<ss::OctomapMessage>("segmentation/octomap", 1, true);
+  const ss::Scene scene = ros_test::clutterScene(1);
+  map_pub.publish(ros_test::octomapMessage(*scene.occupancy, "map"));
+  const ros::Time unheard(500, 0);
+  cloud_pub.publish(ros_test::cloudMessage(*scene.cloud, "map", unheard));
+  // A negative check, nothing timed: it only gets stronger with a longer wait.
+  ros_test::spinUntil([] { return false; }, 1.0);
+  EXPECT_EQ(cloud_pub.getNumSubscribers(), 0u);
+  EXPECT_TRUE(otherSubscribers("/segmentation/input").empty()) << otherSubscribers("/segmentation/input").at(0);
+  EXPECT_FALSE(otherSubscribers("/segmentation/octomap").empty()) << "the map is always cached";
+
+  // Someone subscribes to the markers only: the node subscribes ~input and segments.
+  visualization_msgs::MarkerArray::ConstPtr markers;
+  const ros::Time heard(600, 0);
+  auto markers_sub = nh.subscribe<visualization_msgs::MarkerArray>(
+      "segmentation/symmetry_markers", 1, [&](const visualization_msgs::MarkerArray::ConstPtr& m) {
+        if (!m->markers.empty() && m->markers.front().header.stamp == heard) markers = m;
+      });
+  ASSERT_TRUE(ros_test::spinUntil([&] { return cloud_pub.getNumSubscribers() > 0; }, 30))
+      << "~input not subscribed although ~symmetry_markers has a subscriber";
+  EXPECT_FALSE(otherSubscribers("/segmentation/input").empty());
+  cloud_pub.publish(ros_test::cloudMessage(*scene.cloud, "map", heard));
+  ASSERT_TRUE(ros_test::spinUntil([&] { return markers != nullptr; }, 120)) << "no markers for the published cloud";
+  EXPECT_EQ(markers->markers.back().ns, "object_list");
+  EXPECT_GT(markers->markers.size(), 2u) << "no object found";
+
+  // The last output subscriber leaves: ~input is unsubscribed again.
+  markers_sub.shutdown();
+  ASSERT_TRUE(ros_test::spinUntil([&] { return cloud_pub.getNumSubscribers() == 0; }, 30))
+      << "~input still subscribed without any output subscriber";
+  EXPECT_TRUE(otherSubscribers("/segmentation/input").empty());
+}
+
 TEST(SegmentationTopics, GeneratedSceneIsSegmentedLikeTheCoreDoes) {
   ros::NodeHandle nh;
   std::string config_file;
@@ -42,7 +103,9 @@ TEST(SegmentationTopics, GeneratedSceneIsSegmentedLikeTheCoreDoes) {
   auto labelled_sub = nh.subscribe<sensor_msgs::PointCloud2>(
       "segmentation/segmented_cloud", 1, [&](const sensor_msgs::PointCloud2::ConstPtr& m) { if (m->header.stamp == stamp) labelled = m; });
   auto markers_sub = nh.subscribe<visualization_msgs::MarkerArray>(
-      "segmentation/symmetry_markers", 1, [&](const visualization_msgs::MarkerArray::ConstPtr& m) { markers = m; });
+      "segmentation/symmetry_markers", 1, [&](const visualization_msgs::MarkerArray::ConstPtr& m) {
+        if (m->markers.front().header.stamp == stamp) markers = m;
+      });
   auto cloud_pub = nh.advertise<sensor_msgs::PointCloud2>("segmentation/input", 1);
   auto map_pub = nh.advertise<ss::OctomapMessage>("segmentation/octomap", 1, true);  // latched, like octomap_server
   ASSERT_TRUE(ros_test::spinUntil([&] { return cloud_pub.getNumSubscribers() > 0 && map_pub.getNumSubscribers() > 0; }, 30));
@@ -96,9 +159,12 @@ TEST(SegmentationTopics, GeneratedSceneIsSegmentedLikeTheCoreDoes) {
   for (const auto& p : labelled_points) labels.insert(p.label);
   EXPECT_EQ(labels.size(), objects->objects.size() + 1);  // + 0 for unsegmented points
 
-  // Markers: DELETEALL first, then plane, arrow and text per object.
+  // Markers: DELETEALL first, then plane, arrow and text per object, the object list last.
   EXPECT_EQ(markers->markers.front().action, visualization_msgs::Marker::DELETEALL);
-  EXPECT_EQ(markers->markers.size(), 1 + 3 * objects->objects.size());
+  EXPECT_EQ(markers->markers.size(), 1 + 3 * objects->objects.size() + 1);
+  EXPECT_EQ(markers->markers.back().ns, "object_list");
+  EXPECT_EQ(markers->markers.back().text.rfind(std::to_string(objects->objects.size()) + " objects\n", 0), 0u)
+      << markers->markers.back().text;
 }
 
 TEST(SegmentationTopics, CloudInAnotherFrameGoesThroughTf) {

@@ -4,6 +4,7 @@
 // code the service returns (symmetry_segmentation/SegmentCloud response constants).
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -36,10 +37,20 @@ struct SceneInputs {
   std::optional<Eigen::Vector3f> sensor_origin;  ///< In the processing frame: ray-cast origin without a map,
                                                  ///< normal / table orientation always.
   std::optional<AxisAlignedBox> region_of_interest;  ///< In the processing frame.
+  /// When there is no `occupancy` in the processing frame but a map in another one: returns
+  /// that map moved into the processing frame over the given box (the cloud's usable points,
+  /// processing frame, plus kMapMargin). Its InputErrors become INVALID_INPUT.
+  std::function<std::shared_ptr<octomap::OcTree>(const Eigen::AlignedBox3d&)> occupancy_for_region;
 };
 
+/// Margin (m) around the cloud over which a map from another frame is moved into the processing
+/// frame. The data term's dense cache spans dbuf + dmax + 2 cm around the cloud; reflections
+/// farther out ask the map directly, and beyond this margin the moved map answers "unknown".
+constexpr double kMapMargin = 0.25;
+
 /// The scene the core segments. Throws RequestError with INVALID_INPUT (empty cloud, no x/y/z,
-/// bad layout, no finite point, bad region of interest) or NO_OCCUPANCY (no map and no origin).
+/// bad layout, no finite point, bad region of interest, a map that cannot be moved into the
+/// processing frame) or NO_OCCUPANCY (no map and no origin).
 Scene assembleScene(const sensor_msgs::PointCloud2& cloud, const SceneInputs& inputs);
 
 }  // namespace symmetry_segmentation
