@@ -125,6 +125,32 @@ TEST(InputHardening, PcdFieldDescriptionsMustAgree) {
   expectCloudError(dir + "/data.pcd", "unknown DATA type 'zipped'");
 }
 
+// Found by fuzzing (test/fuzz/corpus/pcd_file/crash_fields_twice.pcd): a second FIELDS line
+// after SIZE / TYPE / COUNT made the checker read past the end of the SIZE list.
+TEST(InputHardening, PcdHeaderLinesMustNotRepeat) {
+  const std::string dir = test_support::makeTempDir("hardening_pcd_repeats");
+  const std::string fields = "FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\n";
+  const std::pair<std::string, const char*> cases[] = {
+      {fields + "FIELDS x y z intensity\n", "FIELDS given twice"},
+      {fields + "COLUMNS x y\n", "FIELDS given twice"},
+      {fields + "SIZE 4 4 4\n", "SIZE given twice"},
+      {fields + "COUNT 1 1 1\n", "COUNT given twice"},
+  };
+  for (const auto& [header_fields, problem] : cases) {
+    writeTextFile(dir + "/repeat.pcd", pcdHeader("1", "1", "1", "ascii", header_fields) + "0 0 1\n");
+    expectCloudError(dir + "/repeat.pcd", problem);
+  }
+  writeTextFile(dir + "/width.pcd", "VERSION 0.7\n" + fields + "WIDTH 1\nWIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA ascii\n0 0 1\n");
+  expectCloudError(dir + "/width.pcd", "WIDTH given twice");
+  // The fuzzer's input itself.
+  const std::string found = test_support::readTextFile(std::string(SOURCE_DIR) + "/test/fuzz/corpus/pcd_file/crash_fields_twice.pcd");
+  writeTextFile(dir + "/found.pcd", found);
+  expectCloudError(dir + "/found.pcd", "FIELDS given twice");
+  // The unrepeated header still loads.
+  writeTextFile(dir + "/once.pcd", pcdHeader("1", "1", "1", "ascii", fields) + "0 0 1\n");
+  EXPECT_EQ(loadCloud(dir + "/once.pcd").cloud->size(), 1u);
+}
+
 TEST(InputHardening, PlyClaimingMoreVerticesThanItHoldsIsRejectedBeforeAllocating) {
   const std::string dir = test_support::makeTempDir("hardening_ply_claims");
   writeTextFile(dir + "/binary.ply", plyHeader("binary_little_endian", "60000000") + std::string(1000, '\1'));

@@ -9,6 +9,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -175,11 +176,17 @@ std::uint64_t singlePcdInteger(const std::string& path, const Words& words) {
 
 PcdHeader parsePcdHeader(const std::string& path, const HeaderText& text) {
   PcdHeader header;
+  std::set<std::string> seen;
   for (const std::string& line : text.lines) {
     const Words words = splitWords(line);
     if (words.empty() || words[0][0] == '#') continue;
     const std::string& key = words[0];
     if (key == "VERSION" || key == "VIEWPOINT") continue;  // PCL parses these; nothing to size
+    // A second FIELDS line after SIZE / TYPE / COUNT would leave those lists a different length
+    // (found by fuzzing: read past their end); no writer repeats a line, so none may repeat.
+    if (!seen.insert(key == "COLUMNS" ? "FIELDS" : key).second) {
+      throw InputError(path, "PCD header: " + shortened(key) + " given twice");
+    }
     if (key == "FIELDS" || key == "COLUMNS") {
       if (words.size() < 2) throw InputError(path, "PCD header: FIELDS is empty");
       header.fields.assign(words.begin() + 1, words.end());
@@ -229,6 +236,10 @@ PcdRecord pcdRecord(const std::string& path, const PcdHeader& header) {
   if (header.fields.empty()) throw InputError(path, "PCD header has no FIELDS line");
   if (header.sizes.empty()) throw InputError(path, "PCD header has no SIZE line");
   if (header.types.empty()) throw InputError(path, "PCD header has no TYPE line");
+  if (header.sizes.size() != header.fields.size() || header.types.size() != header.fields.size() ||
+      (!header.counts.empty() && header.counts.size() != header.fields.size())) {
+    throw InputError(path, "PCD header: SIZE, TYPE and COUNT must have one entry per field");
+  }
   PcdRecord record;
   for (std::size_t i = 0; i < header.fields.size(); ++i) {
     const std::uint64_t size = headerInteger(path, "PCD", "SIZE", header.sizes[i], 8);
