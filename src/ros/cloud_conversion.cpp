@@ -1,9 +1,12 @@
 #include "symmetry_segmentation/ros/cloud_conversion.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
 
+#include <pcl/common/io.h>
 #include <pcl/common/transforms.h>
 #include <pcl_conversions/pcl_conversions.h>
 
@@ -29,6 +32,20 @@ Scene sceneFromCloudMessage(const sensor_msgs::PointCloud2& message) {
   if (message.point_step == 0 || message.row_step < static_cast<std::size_t>(message.width) * message.point_step ||
       message.data.size() < static_cast<std::size_t>(message.row_step) * message.height) {
     throw InputError(source, "data size does not match width, height, point_step and row_step");
+  }
+  // PCL copies each field from offset .. offset + size within a point without checking it: a
+  // field reaching past point_step reads outside the data (found by fuzzing).
+  for (const auto& field : message.fields) {
+    const std::uint64_t value_bytes = pcl::getFieldSize(field.datatype);
+    if (value_bytes == 0) {
+      throw InputError(source, "field '" + field.name + "' has unknown datatype " + std::to_string(field.datatype));
+    }
+    const std::uint64_t bytes = value_bytes * std::max<std::uint32_t>(field.count, 1);
+    if (field.offset + bytes > message.point_step) {
+      throw InputError(source, "field '" + field.name + "' (offset " + std::to_string(field.offset) + ", datatype " +
+                                   std::to_string(field.datatype) + ", count " + std::to_string(field.count) +
+                                   ") does not fit in point_step " + std::to_string(message.point_step));
+    }
   }
   Scene scene;
   scene.name = "ros_cloud";
