@@ -1,7 +1,11 @@
 // The octomap_msgs/Octomap stand-in: identity on the wire, serialisation, tree conversions.
 #include <gtest/gtest.h>
 
+#include <cstring>
+#include <fstream>
+#include <limits>
 #include <memory>
+#include <sstream>
 
 #include <boost/make_shared.hpp>
 #include <octomap/ColorOcTree.h>
@@ -27,6 +31,13 @@ void fillScene(Tree& tree) {
     for (double y = -0.2; y <= 0.2; y += 0.02) points.push_back(x, y, 0.5);
   }
   tree.insertPointCloud(points, octomap::point3d(0, 0, 0));
+}
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream content;
+  content << in.rdbuf();
+  return content.str();
 }
 
 void expectSameOccupancy(const std::shared_ptr<octomap::OcTree>& tree) {
@@ -149,4 +160,73 @@ TEST(OctomapConversion, UnknownIdsEmptyDataAndBadResolutionAreErrors) {
   message = ss::fullMessageFromTree(tree);
   message.data.resize(message.data.size() / 2);
   EXPECT_THROW(ss::occupancyFromMessage(message), ss::InputError);
+}
+
+namespace {
+
+std::string conversionError(const ss::OctomapMessage& message) {
+  try {
+    ss::occupancyFromMessage(message);
+  } catch (const ss::InputError& error) {
+    return error.what();
+  }
+  return "(accepted)";
+}
+
+// A chain of inner nodes, each one's first child the next, ending in an occupied leaf:
+// `inner_levels` inner nodes put the leaf at depth `inner_levels`.
+std::vector<int8_t> binaryChain(int inner_levels) {
+  std::vector<int8_t> data;
+  for (int level = 0; level + 1 < inner_levels; ++level) data.insert(data.end(), {0x03, 0x00});  // child 0 inner
+  data.insert(data.end(), {0x02, 0x00});  // child 0 an occupied leaf
+  return data;
+}
+
+}  // namespace
+
+// Found by fuzzing (test/fuzz/corpus/octomap_message/crash_deep_binary_tree): message data went
+// straight to OctoMap's recursive readers, which built trees deeper than OctoMap's 16 levels from
+// a few bytes (a silently broken map: its leaf iterator and node count disagreed) and accepted a
+// resolution of 3e205 m. Message data now goes through the same checked reader as .bt/.ot files.
+TEST(OctomapConversion, MalformedTreeDataIsAClearError) {
+  const std::string found =
+      readFile(std::string(SOURCE_DIR) + "/test/fuzz/corpus/octomap_message/crash_deep_binary_tree");
+  ASSERT_GT(found.size(), 10u);
+  ss::OctomapMessage message;
+  message.binary = (found[0] & 1) != 0;
+  message.id = "ColorOcTree";  // index 1 of the fuzz target's ids
+  std::memcpy(&message.resolution, found.data() + 2, sizeof(double));
+  message.data.assign(found.begin() + 10, found.end());
+  EXPECT_NE(conversionError(message).find("resolution"), std::string::npos) << conversionError(message);
+  message.resolution = 0.05;
+  EXPECT_NE(conversionError(message).find("corrupt OctoMap data"), std::string::npos) << conversionError(message);
+
+  // OctoMap keys have 16 levels: a leaf at depth 16 is fine, one level more is not.
+  message = ss::OctomapMessage();
+  message.binary = true;
+  message.id = "OcTree";
+  message.resolution = 0.05;
+  message.data = binaryChain(16);
+  const auto tree = ss::occupancyFromMessage(message);
+  EXPECT_EQ(tree->size(), 17u);
+  EXPECT_EQ(tree->getNumLeafNodes(), 1u);
+  // Child 0 at every level: the voxel with key 0, the map's lowest corner (-32768 * 0.05 m).
+  EXPECT_EQ(ss::OccupancyMap(tree).classify({-1638.375f, -1638.375f, -1638.375f}), ss::Occupancy::Occupied);
+  EXPECT_EQ(ss::OccupancyMap(tree).classify({-1638.325f, -1638.375f, -1638.375f}), ss::Occupancy::Unknown);
+  message.data = binaryChain(17);
+  EXPECT_NE(conversionError(message).find("deeper than 16 levels"), std::string::npos) << conversionError(message);
+
+  // Full data: every child bit set, forever; a colour tree cut inside a node; a resolution no
+  // map has.
+  message.binary = false;
+  message.data.assign(4000, static_cast<int8_t>(0xff));
+  EXPECT_NE(conversionError(message).find("corrupt OctoMap data"), std::string::npos) << conversionError(message);
+  octomap::ColorOcTree color(0.02);
+  fillScene(color);
+  message = ss::fullMessageFromTree(color);
+  message.data.resize(message.data.size() - 3);
+  EXPECT_NE(conversionError(message).find("corrupt OctoMap data"), std::string::npos) << conversionError(message);
+  message = ss::fullMessageFromTree(color);
+  message.resolution = std::numeric_limits<double>::infinity();
+  EXPECT_NE(conversionError(message).find("resolution"), std::string::npos) << conversionError(message);
 }
