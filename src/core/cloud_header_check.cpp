@@ -184,9 +184,8 @@ PcdHeader parsePcdHeader(const std::string& path, const HeaderText& text) {
     if (key == "VERSION" || key == "VIEWPOINT") continue;  // PCL parses these; nothing to size
     // A second FIELDS line after SIZE / TYPE / COUNT would leave those lists a different length
     // (found by fuzzing: read past their end); no writer repeats a line, so none may repeat.
-    if (!seen.insert(key == "COLUMNS" ? "FIELDS" : key).second) {
-      throw InputError(path, "PCD header: " + shortened(key) + " given twice");
-    }
+    const std::string line_kind = key == "COLUMNS" ? "FIELDS" : key;  // PCL's old name for FIELDS
+    if (!seen.insert(line_kind).second) throw InputError(path, "PCD header: " + shortened(line_kind) + " given twice");
     if (key == "FIELDS" || key == "COLUMNS") {
       if (words.size() < 2) throw InputError(path, "PCD header: FIELDS is empty");
       header.fields.assign(words.begin() + 1, words.end());

@@ -2,6 +2,8 @@
 // Input layout (little-endian): u32 height, u32 width, u32 point_step, u32 row_step,
 // u8 is_bigendian, u8 field count (mod 17), per field {u8 name (index into kNames),
 // u32 offset, u8 datatype, u32 count}, then the data bytes.
+#include <pcl/console/print.h>
+
 #include "fuzz_support.h"
 #include "symmetry_segmentation/errors.h"
 #include "symmetry_segmentation/ros/cloud_conversion.h"
@@ -11,6 +13,12 @@ namespace ss = symmetry_segmentation;
 namespace {
 const char* const kNames[] = {"x",      "y",   "z",    "normal_x",  "normal_y",  "normal_z", "rgb",
                               "rgba",   "curvature", "intensity", "",        "label",    "X"};
+}
+
+// PCL warns on stderr about every field it cannot map; millions of lines slow the fuzzer down.
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+  pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
+  return 0;
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
