@@ -142,6 +142,15 @@ TEST(InputHardening, PcdHeaderLinesMustNotRepeat) {
   }
   writeTextFile(dir + "/width.pcd", "VERSION 0.7\n" + fields + "WIDTH 1\nWIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA ascii\n0 0 1\n");
   expectCloudError(dir + "/width.pcd", "WIDTH given twice");
+  // Found by fuzzing (corpus/pcd_file/crash_blank_cr_line.pcd): PCL's reader dereferenced null
+  // on a whitespace-only line at the top of the header.
+  for (const char* blank : {"\r\n", " \n", "\n"}) {
+    writeTextFile(dir + "/blank.pcd", blank + pcdHeader("1", "1", "1", "ascii", fields) + "0 0 1\n");
+    expectCloudError(dir + "/blank.pcd", "line 1 is blank");
+  }
+  writeTextFile(dir + "/blank_cr.pcd",
+                test_support::readTextFile(std::string(SOURCE_DIR) + "/test/fuzz/corpus/pcd_file/crash_blank_cr_line.pcd"));
+  expectCloudError(dir + "/blank_cr.pcd", "is blank");
   // The fuzzer's input itself.
   const std::string found = test_support::readTextFile(std::string(SOURCE_DIR) + "/test/fuzz/corpus/pcd_file/crash_fields_twice.pcd");
   writeTextFile(dir + "/found.pcd", found);

@@ -177,9 +177,13 @@ std::uint64_t singlePcdInteger(const std::string& path, const Words& words) {
 PcdHeader parsePcdHeader(const std::string& path, const HeaderText& text) {
   PcdHeader header;
   std::set<std::string> seen;
-  for (const std::string& line : text.lines) {
+  for (std::size_t number = 0; number < text.lines.size(); ++number) {
+    const std::string& line = text.lines[number];
     const Words words = splitWords(line);
-    if (words.empty() || words[0][0] == '#') continue;
+    // PCL's reader crashes (null read) on a whitespace-only line such as " " or "\r" at the top
+    // (found by fuzzing); no writer puts blank lines into a header, so none may be there.
+    if (words.empty()) throw InputError(path, "PCD header: line " + std::to_string(number + 1) + " is blank");
+    if (words[0][0] == '#') continue;
     const std::string& key = words[0];
     if (key == "VERSION" || key == "VIEWPOINT") continue;  // PCL parses these; nothing to size
     // A second FIELDS line after SIZE / TYPE / COUNT would leave those lists a different length
