@@ -125,6 +125,76 @@ TEST(InputHardening, PcdFieldDescriptionsMustAgree) {
   expectCloudError(dir + "/data.pcd", "unknown DATA type 'zipped'");
 }
 
+// Found by fuzzing (test/fuzz/corpus/pcd_file/crash_fields_twice.pcd): a second FIELDS line
+// after SIZE / TYPE / COUNT made the checker read past the end of the SIZE list.
+TEST(InputHardening, PcdHeaderLinesMustNotRepeat) {
+  const std::string dir = test_support::makeTempDir("hardening_pcd_repeats");
+  const std::string fields = "FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\n";
+  const std::pair<std::string, const char*> cases[] = {
+      {fields + "FIELDS x y z intensity\n", "FIELDS given twice"},
+      {fields + "COLUMNS x y\n", "FIELDS given twice"},
+      {fields + "SIZE 4 4 4\n", "SIZE given twice"},
+      {fields + "COUNT 1 1 1\n", "COUNT given twice"},
+  };
+  for (const auto& [header_fields, problem] : cases) {
+    writeTextFile(dir + "/repeat.pcd", pcdHeader("1", "1", "1", "ascii", header_fields) + "0 0 1\n");
+    expectCloudError(dir + "/repeat.pcd", problem);
+  }
+  writeTextFile(dir + "/width.pcd", "VERSION 0.7\n" + fields + "WIDTH 1\nWIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA ascii\n0 0 1\n");
+  expectCloudError(dir + "/width.pcd", "WIDTH given twice");
+  // Found by fuzzing (corpus/pcd_file/crash_blank_cr_line.pcd): PCL's reader dereferenced null
+  // on a whitespace-only line at the top of the header.
+  for (const char* blank : {"\r\n", " \n", "\n"}) {
+    writeTextFile(dir + "/blank.pcd", blank + pcdHeader("1", "1", "1", "ascii", fields) + "0 0 1\n");
+    expectCloudError(dir + "/blank.pcd", "line 1 is blank");
+  }
+  writeTextFile(dir + "/blank_cr.pcd",
+                test_support::readTextFile(std::string(SOURCE_DIR) + "/test/fuzz/corpus/pcd_file/crash_blank_cr_line.pcd"));
+  expectCloudError(dir + "/blank_cr.pcd", "is blank");
+  // The fuzzer's input itself.
+  const std::string found = test_support::readTextFile(std::string(SOURCE_DIR) + "/test/fuzz/corpus/pcd_file/crash_fields_twice.pcd");
+  writeTextFile(dir + "/found.pcd", found);
+  expectCloudError(dir + "/found.pcd", "FIELDS given twice");
+  // The unrepeated header still loads.
+  writeTextFile(dir + "/once.pcd", pcdHeader("1", "1", "1", "ascii", fields) + "0 0 1\n");
+  EXPECT_EQ(loadCloud(dir + "/once.pcd").cloud->size(), 1u);
+}
+
+// Found by fuzzing (test/fuzz/corpus/ply_file/crash_lone_blue.ply): PCL packs 8-bit colours
+// into one rgb field that only "red" creates; a vertex with "blue" but no "red" made Debian's PCL
+// abort on an assertion (the whole process, not just the load).
+TEST(InputHardening, PlyVertexColourMustBeRedGreenBlue) {
+  const std::string dir = test_support::makeTempDir("hardening_ply_colour");
+  const char* const problem = "8-bit vertex colour must be the properties red, green, blue";
+  const std::pair<const char*, const char*> cases[] = {
+      {"property uchar blue\n", "7"},
+      {"property uchar green\nproperty uchar blue\n", "7 8"},
+      {"property uchar red\nproperty uchar green\n", "7 8"},
+      {"property uchar blue\nproperty uchar green\nproperty uchar red\n", "7 8 9"},
+      {"property uchar red\nproperty float intensity\nproperty uchar green\nproperty uchar blue\n", "7 0.5 8 9"},
+      {"property uchar alpha\n", "7"},
+      {"property uchar red\nproperty uchar green\nproperty uchar diffuse_blue\n", "7 8 9"},
+  };
+  for (const auto& [properties, values] : cases) {
+    writeTextFile(dir + "/colour.ply", plyHeader("ascii", "1", properties) + "0 0 1 " + values + "\n");
+    expectCloudError(dir + "/colour.ply", problem);
+  }
+  const std::string found = test_support::readTextFile(std::string(SOURCE_DIR) + "/test/fuzz/corpus/ply_file/crash_lone_blue.ply");
+  writeTextFile(dir + "/found.ply", found);
+  expectCloudError(dir + "/found.ply", problem);
+  // What PCL and other writers save still loads, with its colour.
+  writeTextFile(dir + "/rgb.ply", plyHeader("ascii", "1", "property uchar red\nproperty uchar green\nproperty uchar blue\n") +
+                                      "0 0 1 10 20 30\n");
+  const ss::Scene rgb = loadCloud(dir + "/rgb.ply");
+  EXPECT_TRUE(rgb.has_color);
+  EXPECT_EQ(rgb.cloud->points[0].r, 10);
+  EXPECT_EQ(rgb.cloud->points[0].b, 30);
+  writeTextFile(dir + "/rgba.ply", plyHeader("ascii", "1", "property uchar diffuse_red\nproperty uchar diffuse_green\n"
+                                                           "property uchar diffuse_blue\nproperty uchar alpha\n") +
+                                       "0 0 1 10 20 30 255\n");
+  EXPECT_EQ(loadCloud(dir + "/rgba.ply").cloud->points[0].g, 20);
+}
+
 TEST(InputHardening, PlyClaimingMoreVerticesThanItHoldsIsRejectedBeforeAllocating) {
   const std::string dir = test_support::makeTempDir("hardening_ply_claims");
   writeTextFile(dir + "/binary.ply", plyHeader("binary_little_endian", "60000000") + std::string(1000, '\1'));

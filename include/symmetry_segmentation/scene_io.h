@@ -28,6 +28,21 @@ Scene loadScene(const std::string& path, const SceneLoadOptions& options = {});
 void loadCloudFile(const std::string& path, Scene& scene);
 
 std::shared_ptr<octomap::OcTree> loadOctomapFile(const std::string& path);
+
+/// How OctoMap node data is encoded.
+enum class OctreeEncoding {
+  Binary,     ///< .bt / binary message: 2 bits per child, free or occupied only (any tree type).
+  Full,       ///< .ot / full message of an OcTree: float log-odds and a child byte per node.
+  FullColor,  ///< Full message of a ColorOcTree: log-odds, 3 colour bytes, child byte per node.
+};
+
+/// Reads OctoMap node data (what follows the header of a .bt / .ot file, or the data of an
+/// octomap_msgs/Octomap) into an OcTree with leaves of `resolution` (m, within [1e-4, 10]);
+/// colours are dropped. The node stream is walked before OctoMap reads it: at most 16 levels,
+/// no node cut off, no bytes left over (OctoMap's own readers follow garbage past the data and
+/// past the tree's depth). Empty data gives an empty tree. Throws InputError("<source>: ...").
+std::shared_ptr<octomap::OcTree> readOctreeData(const std::string& source, const std::string& data,
+                                                OctreeEncoding encoding, double resolution);
 PlaneCoefficients loadPlaneFile(const std::string& path);
 std::vector<int> loadLabelsFile(const std::string& path, std::size_t expected_count);
 

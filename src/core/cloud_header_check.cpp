@@ -9,6 +9,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -175,11 +176,20 @@ std::uint64_t singlePcdInteger(const std::string& path, const Words& words) {
 
 PcdHeader parsePcdHeader(const std::string& path, const HeaderText& text) {
   PcdHeader header;
-  for (const std::string& line : text.lines) {
+  std::set<std::string> seen;
+  for (std::size_t number = 0; number < text.lines.size(); ++number) {
+    const std::string& line = text.lines[number];
     const Words words = splitWords(line);
-    if (words.empty() || words[0][0] == '#') continue;
+    // PCL's reader crashes (null read) on a whitespace-only line such as " " or "\r" at the top
+    // (found by fuzzing); no writer puts blank lines into a header, so none may be there.
+    if (words.empty()) throw InputError(path, "PCD header: line " + std::to_string(number + 1) + " is blank");
+    if (words[0][0] == '#') continue;
     const std::string& key = words[0];
     if (key == "VERSION" || key == "VIEWPOINT") continue;  // PCL parses these; nothing to size
+    // A second FIELDS line after SIZE / TYPE / COUNT would leave those lists a different length
+    // (found by fuzzing: read past their end); no writer repeats a line, so none may repeat.
+    const std::string line_kind = key == "COLUMNS" ? "FIELDS" : key;  // PCL's old name for FIELDS
+    if (!seen.insert(line_kind).second) throw InputError(path, "PCD header: " + shortened(line_kind) + " given twice");
     if (key == "FIELDS" || key == "COLUMNS") {
       if (words.size() < 2) throw InputError(path, "PCD header: FIELDS is empty");
       header.fields.assign(words.begin() + 1, words.end());
@@ -229,6 +239,10 @@ PcdRecord pcdRecord(const std::string& path, const PcdHeader& header) {
   if (header.fields.empty()) throw InputError(path, "PCD header has no FIELDS line");
   if (header.sizes.empty()) throw InputError(path, "PCD header has no SIZE line");
   if (header.types.empty()) throw InputError(path, "PCD header has no TYPE line");
+  if (header.sizes.size() != header.fields.size() || header.types.size() != header.fields.size() ||
+      (!header.counts.empty() && header.counts.size() != header.fields.size())) {
+    throw InputError(path, "PCD header: SIZE, TYPE and COUNT must have one entry per field");
+  }
   PcdRecord record;
   for (std::size_t i = 0; i < header.fields.size(); ++i) {
     const std::uint64_t size = headerInteger(path, "PCD", "SIZE", header.sizes[i], 8);
@@ -326,6 +340,7 @@ struct PlyElement {
   std::size_t properties = 0;
   std::uint64_t min_binary_bytes = 0;  ///< Scalars' sizes plus list length words (lists may be empty).
   std::uint64_t min_ascii_values = 0;  ///< Scalars plus list lengths.
+  Words uint8_scalars;                 ///< Names of the 8-bit unsigned scalar properties, in order.
 };
 
 struct PlyHeader {
@@ -354,9 +369,12 @@ void addPlyProperty(const std::string& path, const Words& words, PlyHeader& head
   PlyElement& element = header.elements.back();
   if (words.size() == 3) {
     element.min_binary_bytes += plyPropertyType(path, words[1]);
+    if (words[1] == "uchar" || words[1] == "uint8") element.uint8_scalars.push_back(words[2]);
+    else element.uint8_scalars.push_back("");  // keeps "adjacent" meaning adjacent properties
   } else if (words.size() == 5 && words[1] == "list") {
     element.min_binary_bytes += plyPropertyType(path, words[2]);
     plyPropertyType(path, words[3]);
+    element.uint8_scalars.push_back("");
   } else {
     std::string line;
     for (const std::string& word : words) line += (line.empty() ? "" : " ") + word;
@@ -398,6 +416,31 @@ PlyHeader parsePlyHeader(const std::string& path, const HeaderText& text) {
   return header;
 }
 
+// PCL reads 8-bit vertex colours into one packed rgb field: red adds the field and remembers
+// where it is, blue writes it, alpha widens it to rgba. Any other arrangement writes outside
+// the field or the point, and Debian's PCL aborts on an assertion (found by fuzzing: a lone
+// blue). Accepted: red, green, blue adjacent and in this order (or the diffuse_ names), then
+// optionally alpha, as PCL and other writers save them.
+void checkPlyVertexColour(const std::string& path, const PlyElement& vertex) {
+  const Words& names = vertex.uint8_scalars;
+  const auto is_colour = [](const std::string& name) {
+    return name == "red" || name == "green" || name == "blue" || name == "alpha" || name == "diffuse_red" ||
+           name == "diffuse_green" || name == "diffuse_blue";
+  };
+  const std::size_t count = static_cast<std::size_t>(std::count_if(names.begin(), names.end(), is_colour));
+  if (count == 0) return;
+  const auto first = std::find_if(names.begin(), names.end(), is_colour);
+  const std::size_t at = static_cast<std::size_t>(first - names.begin());
+  const std::string prefix = names[at].rfind("diffuse_", 0) == 0 ? "diffuse_" : "";
+  const bool triple = at + 3 <= names.size() && names[at] == prefix + "red" && names[at + 1] == prefix + "green" &&
+                      names[at + 2] == prefix + "blue";
+  const bool alpha = triple && at + 3 < names.size() && names[at + 3] == "alpha";
+  if (!triple || count != (alpha ? 4u : 3u)) {
+    throw InputError(path, "PLY header: 8-bit vertex colour must be the properties red, green, blue in this order "
+                           "(optionally then alpha)");
+  }
+}
+
 std::uint64_t plyVertexCount(const std::string& path, const PlyHeader& header) {
   std::optional<std::uint64_t> vertices;
   for (const PlyElement& element : header.elements) {
@@ -411,6 +454,7 @@ std::uint64_t plyVertexCount(const std::string& path, const PlyHeader& header) {
     if (element.name == "vertex") {
       if (vertices) throw InputError(path, "PLY header: more than one vertex element");
       vertices = element.count;
+      checkPlyVertexColour(path, element);
     }
   }
   if (!vertices) throw InputError(path, "PLY header has no vertex element");

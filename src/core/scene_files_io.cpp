@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <boost/filesystem.hpp>
+#include <octomap/ColorOcTree.h>
 #include <octomap/OcTree.h>
 
 #include "symmetry_segmentation/cloud_header_check.h"
@@ -154,14 +155,16 @@ std::uint64_t countBinaryTreeNodes(const std::string& path, const std::string& d
 
 // .ot (OcTree): every node is its float log-odds then one byte of child bits; every child is
 // followed by its own node. Leaves have no children, so their count is already in the walk.
-std::uint64_t countFullTreeNodes(const std::string& path, const std::string& data) {
+// ColorOcTree nodes hold 3 colour bytes between the two (`payload_bytes` after the log-odds).
+std::uint64_t countFullTreeNodes(const std::string& path, const std::string& data, std::size_t payload_bytes = 0) {
   bool finite = true;
-  const std::uint64_t nodes =
-      countTreeNodes(path, data, sizeof(float) + 1, false, [&finite](const unsigned char* bytes, int& existing, int& followed) {
+  const std::size_t child_byte = sizeof(float) + payload_bytes;
+  const std::uint64_t nodes = countTreeNodes(
+      path, data, child_byte + 1, false, [&finite, child_byte](const unsigned char* bytes, int& existing, int& followed) {
         float log_odds = 0.0f;
         std::memcpy(&log_odds, bytes, sizeof(float));
         finite = finite && std::isfinite(log_odds);
-        existing = followed = bytes[sizeof(float)];
+        existing = followed = bytes[child_byte];
       });
   if (!finite) throwCorruptTree(path, "non-finite occupancy value");
   return nodes;
@@ -173,23 +176,19 @@ void requireNodeCount(const std::string& path, std::uint64_t declared, std::uint
   }
 }
 
-// Reads the (already validated) data with OctoMap. A failing read throws instead of leaving
-// OctoMap to continue on uninitialised bytes; the result must match the header.
-template <typename ReadNodes>
-std::shared_ptr<octomap::OcTree> readTree(const std::string& path, const OctomapHeader& header,
-                                          const std::string& data, ReadNodes read_nodes) {
-  auto tree = std::make_shared<octomap::OcTree>(header.resolution);
-  if (header.size == 0) return tree;  // an empty map has no data at all
+// Reads the (already walked) data with OctoMap. A failing read throws instead of leaving
+// OctoMap to continue on uninitialised bytes; the result must hold the nodes the walk counted.
+template <typename Tree, typename ReadNodes>
+void readNodes(const std::string& path, const std::string& data, std::uint64_t nodes, Tree& tree, ReadNodes read_nodes) {
   std::istringstream stream(data);
   stream.exceptions(std::ios::failbit | std::ios::badbit);
   try {
-    read_nodes(*tree, stream);
+    read_nodes(tree, stream);
   } catch (const std::ios_base::failure&) {
     throw InputError(path, "truncated or corrupt OctoMap data");
   }
-  requireNodeCount(path, header.size, tree->size());
+  requireNodeCount(path, nodes, tree.size());
   if (stream.rdbuf()->sgetc() != std::char_traits<char>::eof()) throwCorruptTree(path, "bytes after the tree");
-  return tree;
 }
 
 std::shared_ptr<octomap::OcTree> loadTree(const std::string& path, const std::string& content, bool binary) {
@@ -205,16 +204,43 @@ std::shared_ptr<octomap::OcTree> loadTree(const std::string& path, const std::st
     throwCorruptTree(path, "header says " + std::to_string(header.size) + " nodes, " +
                                std::to_string(data.size()) + " bytes hold at most " + std::to_string(max_nodes));
   }
-  if (header.size == 0) {
-    if (!data.empty()) throwCorruptTree(path, "an empty tree with data");
-  } else {
-    requireNodeCount(path, header.size, binary ? countBinaryTreeNodes(path, data) : countFullTreeNodes(path, data));
-  }
-  if (binary) return readTree(path, header, data, [](octomap::OcTree& tree, std::istream& s) { tree.readBinaryData(s); });
-  return readTree(path, header, data, [](octomap::OcTree& tree, std::istream& s) { tree.readData(s); });
+  if (header.size == 0 && !data.empty()) throwCorruptTree(path, "an empty tree with data");
+  auto tree = readOctreeData(path, data, binary ? OctreeEncoding::Binary : OctreeEncoding::Full, header.resolution);
+  requireNodeCount(path, header.size, tree->size());
+  return tree;
 }
 
 }  // namespace
+
+std::shared_ptr<octomap::OcTree> readOctreeData(const std::string& source, const std::string& data,
+                                                OctreeEncoding encoding, double resolution) {
+  if (!(resolution >= kMinResolution && resolution <= kMaxResolution)) {
+    throw InputError(source, "OctoMap resolution " + std::to_string(resolution) + " must be within [1e-4, 10] m");
+  }
+  auto tree = std::make_shared<octomap::OcTree>(resolution);
+  if (data.empty()) return tree;  // an empty map has no data at all
+  switch (encoding) {
+    case OctreeEncoding::Binary:
+      readNodes(source, data, countBinaryTreeNodes(source, data), *tree,
+                [](octomap::OcTree& t, std::istream& s) { t.readBinaryData(s); });
+      break;
+    case OctreeEncoding::Full:
+      readNodes(source, data, countFullTreeNodes(source, data), *tree,
+                [](octomap::OcTree& t, std::istream& s) { t.readData(s); });
+      break;
+    case OctreeEncoding::FullColor: {
+      // Keep the occupancy, drop the colours: the colour tree's binary form read as an OcTree.
+      const std::uint64_t nodes = countFullTreeNodes(source, data, 3);
+      octomap::ColorOcTree color(resolution);
+      readNodes(source, data, nodes, color, [](octomap::ColorOcTree& t, std::istream& s) { t.readData(s); });
+      std::stringstream binary(std::ios::in | std::ios::out | std::ios::binary);
+      color.writeBinaryData(binary);
+      readNodes(source, binary.str(), nodes, *tree, [](octomap::OcTree& t, std::istream& s) { t.readBinaryData(s); });
+      break;
+    }
+  }
+  return tree;
+}
 
 std::shared_ptr<octomap::OcTree> loadOctomapFile(const std::string& path) {
   const std::string content = readWholeFile(path);

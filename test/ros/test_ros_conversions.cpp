@@ -260,6 +260,43 @@ TEST(SceneAssembly, MapFromAnotherFrameIsAskedForAroundTheCloud) {
     throw ss::InputError("too large");
   };
   EXPECT_EQ(statusOf(xyzMessage({{0, 0, 1}}), inputs), Response::INVALID_INPUT);
+// Found by fuzzing (test/fuzz/corpus/pointcloud2/crash_field_offset): PCL copies every field
+// from its offset without checking it against point_step, so a field offset of 16 MB read far
+// outside the data.
+TEST(CloudConversion, FieldsOutsideThePointAreInputErrors) {
+  const auto expectError = [](const sensor_msgs::PointCloud2& message, const std::string& problem) {
+    try {
+      ss::sceneFromCloudMessage(message);
+      ADD_FAILURE() << "accepted, expected an error containing '" << problem << "'";
+    } catch (const ss::InputError& error) {
+      EXPECT_NE(std::string(error.what()).find(problem), std::string::npos) << error.what();
+    }
+  };
+  const sensor_msgs::PointCloud2 valid = xyzMessage({{1, 2, 3}, {4, 5, 6}});
+  ASSERT_EQ(valid.fields.size(), 3u);
+  ASSERT_EQ(valid.fields[2].name, "z");
+  sensor_msgs::PointCloud2 message = valid;
+  message.fields[2].offset = 0x01000003;
+  expectError(message, "field 'z' (offset 16777219, datatype 7, count 1) does not fit in point_step");
+  message = valid;
+  message.fields[2].offset = message.point_step - 2;  // the last 2 of its 4 bytes lie outside
+  expectError(message, "field 'z'");
+  message = valid;
+  message.fields[0].count = 0x40000000;  // 4 GB of floats; 32-bit arithmetic would wrap to 0
+  expectError(message, "field 'x'");
+  message = valid;
+  message.fields[1].datatype = 0;
+  expectError(message, "field 'y' has unknown datatype 0");
+  message = valid;
+  message.fields.push_back(message.fields[2]);
+  message.fields.back().name = "intensity";
+  message.fields.back().offset = 0xfffffffe;  // offset + size wraps in 32 bits
+  expectError(message, "field 'intensity'");
+  // A field ending exactly at point_step is fine; the valid message still converts.
+  message = valid;
+  message.fields[2].offset = message.point_step - 4;
+  EXPECT_EQ(ss::sceneFromCloudMessage(message).size(), 2u);
+  EXPECT_FLOAT_EQ(ss::sceneFromCloudMessage(valid).cloud->points[1].z, 6.0f);
 }
 
 TEST(CloudConversion, TransformMovesPointsAndRotatesNormals) {

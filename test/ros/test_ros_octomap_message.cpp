@@ -2,7 +2,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <fstream>
+#include <limits>
 #include <memory>
+#include <sstream>
 
 #include <Eigen/Geometry>
 
@@ -32,6 +36,13 @@ void fillScene(Tree& tree) {
   tree.insertPointCloud(points, octomap::point3d(0, 0, 0));
 }
 
+std::string readFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream content;
+  content << in.rdbuf();
+  return content.str();
+}
+
 void expectSameOccupancy(const std::shared_ptr<octomap::OcTree>& tree) {
   ASSERT_TRUE(tree);
   const ss::OccupancyMap map(tree);
@@ -50,7 +61,10 @@ TEST(OctomapMessage, IdentifiesAsOctomapMsgsOctomap) {
   EXPECT_EQ(definition.rfind("# A 3D map in binary format, as Octree\nHeader header\n", 0), 0u);
   EXPECT_NE(definition.find("\nint8[] data\n"), std::string::npos);
   EXPECT_NE(definition.find("MSG: std_msgs/Header\n"), std::string::npos);
-  EXPECT_TRUE(mt::HasHeader<ss::OctomapMessage>::value);
+  // A copy: EXPECT_TRUE binds a reference to ROS's in-class constant, which has no definition
+  // to link against unless the optimiser folds it (the -O1 sanitizer build does not).
+  const bool has_header = mt::HasHeader<ss::OctomapMessage>::value;
+  EXPECT_TRUE(has_header);
   ss::OctomapMessage message;
   message.header.frame_id = "map";
   message.header.stamp = ros::Time(12, 34);
@@ -200,4 +214,71 @@ TEST(OctomapConversion, ResamplingRefusesEmptyOrHugeRegions) {
   EXPECT_THROW(ss::resampleOccupancy(source, Eigen::Isometry3d::Identity(), Eigen::AlignedBox3d()), ss::InputError);
   const Eigen::AlignedBox3d ten_metres(Eigen::Vector3d::Constant(-5), Eigen::Vector3d::Constant(5));
   EXPECT_THROW(ss::resampleOccupancy(source, Eigen::Isometry3d::Identity(), ten_metres, 1000000), ss::InputError);
+namespace {
+
+std::string conversionError(const ss::OctomapMessage& message) {
+  try {
+    ss::occupancyFromMessage(message);
+  } catch (const ss::InputError& error) {
+    return error.what();
+  }
+  return "(accepted)";
+}
+
+// A chain of inner nodes, each one's first child the next, ending in an occupied leaf:
+// `inner_levels` inner nodes put the leaf at depth `inner_levels`.
+std::vector<int8_t> binaryChain(int inner_levels) {
+  std::vector<int8_t> data;
+  for (int level = 0; level + 1 < inner_levels; ++level) data.insert(data.end(), {0x03, 0x00});  // child 0 inner
+  data.insert(data.end(), {0x02, 0x00});  // child 0 an occupied leaf
+  return data;
+}
+
+}  // namespace
+
+// Found by fuzzing (test/fuzz/corpus/octomap_message/crash_deep_binary_tree): message data went
+// straight to OctoMap's recursive readers, which built trees deeper than OctoMap's 16 levels from
+// a few bytes (a silently broken map: its leaf iterator and node count disagreed) and accepted a
+// resolution of 3e205 m. Message data now goes through the same checked reader as .bt/.ot files.
+TEST(OctomapConversion, MalformedTreeDataIsAClearError) {
+  const std::string found =
+      readFile(std::string(SOURCE_DIR) + "/test/fuzz/corpus/octomap_message/crash_deep_binary_tree");
+  ASSERT_GT(found.size(), 10u);
+  ss::OctomapMessage message;
+  message.binary = (found[0] & 1) != 0;
+  message.id = "ColorOcTree";  // index 1 of the fuzz target's ids
+  std::memcpy(&message.resolution, found.data() + 2, sizeof(double));
+  message.data.assign(found.begin() + 10, found.end());
+  EXPECT_NE(conversionError(message).find("resolution"), std::string::npos) << conversionError(message);
+  message.resolution = 0.05;
+  EXPECT_NE(conversionError(message).find("corrupt OctoMap data"), std::string::npos) << conversionError(message);
+
+  // OctoMap keys have 16 levels: a leaf at depth 16 is fine, one level more is not.
+  message = ss::OctomapMessage();
+  message.binary = true;
+  message.id = "OcTree";
+  message.resolution = 0.05;
+  message.data = binaryChain(16);
+  const auto tree = ss::occupancyFromMessage(message);
+  EXPECT_EQ(tree->size(), 17u);
+  EXPECT_EQ(tree->getNumLeafNodes(), 1u);
+  // Child 0 at every level: the voxel with key 0, the map's lowest corner (-32768 * 0.05 m).
+  EXPECT_EQ(ss::OccupancyMap(tree).classify({-1638.375f, -1638.375f, -1638.375f}), ss::Occupancy::Occupied);
+  EXPECT_EQ(ss::OccupancyMap(tree).classify({-1638.325f, -1638.375f, -1638.375f}), ss::Occupancy::Unknown);
+  message.data = binaryChain(17);
+  EXPECT_NE(conversionError(message).find("deeper than 16 levels"), std::string::npos) << conversionError(message);
+
+  // Full data: every child bit set, forever; a colour tree cut inside a node; a resolution no
+  // map has.
+  message.binary = false;
+  message.data.assign(4000, static_cast<int8_t>(0xff));
+  EXPECT_NE(conversionError(message).find("corrupt OctoMap data"), std::string::npos) << conversionError(message);
+  octomap::ColorOcTree color(0.02);
+  fillScene(color);
+  message = ss::fullMessageFromTree(color);
+  message.data.resize(message.data.size() - 3);
+  EXPECT_NE(conversionError(message).find("corrupt OctoMap data"), std::string::npos) << conversionError(message);
+  message = ss::fullMessageFromTree(color);
+  message.resolution = std::numeric_limits<double>::infinity();
+  EXPECT_NE(conversionError(message).find("resolution"), std::string::npos) << conversionError(message);
 }
