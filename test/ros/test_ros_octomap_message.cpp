@@ -214,6 +214,8 @@ TEST(OctomapConversion, ResamplingRefusesEmptyOrHugeRegions) {
   EXPECT_THROW(ss::resampleOccupancy(source, Eigen::Isometry3d::Identity(), Eigen::AlignedBox3d()), ss::InputError);
   const Eigen::AlignedBox3d ten_metres(Eigen::Vector3d::Constant(-5), Eigen::Vector3d::Constant(5));
   EXPECT_THROW(ss::resampleOccupancy(source, Eigen::Isometry3d::Identity(), ten_metres, 1000000), ss::InputError);
+}
+
 namespace {
 
 std::string conversionError(const ss::OctomapMessage& message) {
