@@ -6,30 +6,10 @@
 #include <optional>
 #include <utility>
 
+#include "symmetry_segmentation/symmetry/sorted_indices.h"
+
 namespace symmetry_segmentation {
 namespace {
-
-std::size_t intersectionSize(const std::vector<int>& a, const std::vector<int>& b) {
-  std::size_t count = 0;
-  auto i = a.begin();
-  auto j = b.begin();
-  while (i != a.end() && j != b.end()) {
-    if (*i < *j) {
-      ++i;
-    } else if (*j < *i) {
-      ++j;
-    } else {
-      ++count;
-      ++i;
-      ++j;
-    }
-  }
-  return count;
-}
-
-bool contains(const std::vector<int>& sorted, int value) {
-  return std::binary_search(sorted.begin(), sorted.end(), value);
-}
 
 /// Whether parts a and b are apart (fewer than min_seam_links links between them) or meet at a
 /// seam at least `min_crease_fraction` of whose links cross a crease.
@@ -62,12 +42,6 @@ bool mirroredOntoOther(const std::vector<int>& part, const std::vector<int>& oth
     swapped += (contains(other, q) && !contains(part, q)) ? 1 : 0;
   }
   return matched > 0 && swapped > params.max_swapped_fraction * matched;
-}
-
-std::vector<int> difference(const std::vector<int>& a, const std::vector<int>& b) {
-  std::vector<int> rest;
-  std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(rest));
-  return rest;
 }
 
 /// Whether parts a and b of `whole` are two objects: apart or meeting at a concave seam (at least

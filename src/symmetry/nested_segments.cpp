@@ -4,22 +4,9 @@
 #include <algorithm>
 #include <numeric>
 
+#include "symmetry_segmentation/symmetry/sorted_indices.h"
+
 namespace symmetry_segmentation {
-namespace {
-
-std::vector<int> intersection(const std::vector<int>& a, const std::vector<int>& b) {
-  std::vector<int> common;
-  std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(common));
-  return common;
-}
-
-std::vector<int> difference(const std::vector<int>& a, const std::vector<int>& b) {
-  std::vector<int> rest;
-  std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(rest));
-  return rest;
-}
-
-}  // namespace
 
 std::vector<std::size_t> removeForeignParts(std::vector<CandidateSegment>& segments,
                                             const ReflectionExplained& explained, int min_points,

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include "symmetry_segmentation/symmetry/sorted_indices.h"
+
 namespace symmetry_segmentation {
 
 bool passesFilter(const CandidateSegment& segment, const SymmetryFilterParams& params) {
@@ -12,18 +14,7 @@ bool passesFilter(const CandidateSegment& segment, const SymmetryFilterParams& p
 
 float overlapOfSmaller(const std::vector<int>& a, const std::vector<int>& b) {
   if (a.empty() || b.empty()) return 0.0f;
-  std::size_t common = 0;
-  for (auto i = a.begin(), j = b.begin(); i != a.end() && j != b.end();) {
-    if (*i < *j) {
-      ++i;
-    } else if (*j < *i) {
-      ++j;
-    } else {
-      ++common;
-      ++i;
-      ++j;
-    }
-  }
+  const std::size_t common = intersectionSize(a, b);
   return static_cast<float>(common) / static_cast<float>(std::min(a.size(), b.size()));
 }
 
