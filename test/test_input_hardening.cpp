@@ -160,6 +160,36 @@ TEST(InputHardening, PcdHeaderLinesMustNotRepeat) {
   EXPECT_EQ(loadCloud(dir + "/once.pcd").cloud->size(), 1u);
 }
 
+// Found by fuzzing (test/fuzz/corpus/pcd_file/crash_data_read_as_header*.pcd): PCL reads past
+// DATA as header lines while they are empty, comments or keywords; binary data starting with
+// "COLUMNS" emptied its field list and its reader then read past the end of that list.
+TEST(InputHardening, PcdDataThatPclWouldReadAsHeaderIsRejected) {
+  const std::string dir = test_support::makeTempDir("hardening_pcd_data_header");
+  const std::string points(3 * 12, '\0');
+  const std::pair<std::string, const char*> cases[] = {
+      {"COLUMNS\n", "header keyword 'COLUMNS'"},
+      {"WIDTH 1\n", "header keyword 'WIDTH'"},
+      {"\n#x\nVERSION 3\n \tDATAxyz\n", "header keyword 'DATA'"},  // skipped lines, then a keyword
+      {"POINTSy", "header keyword 'POINTS'"},                          // matched by prefix, like PCL
+  };
+  for (const auto& [start, problem] : cases) {
+    writeTextFile(dir + "/keyword.pcd", pcdHeader("3", "1", "3", "binary") + start + points);
+    expectCloudError(dir + "/keyword.pcd", problem);
+  }
+  for (const char* found : {"crash_data_read_as_header.pcd", "crash_data_read_as_header_2.pcd"}) {
+    writeTextFile(dir + "/found.pcd",
+                  test_support::readTextFile(std::string(SOURCE_DIR) + "/test/fuzz/corpus/pcd_file/" + found));
+    expectCloudError(dir + "/found.pcd", "header keyword 'COLUMNS'");
+  }
+  // Data that only looks like a comment, or starts with a word PCL does not know, still loads.
+  for (const std::string start : {"#abc\n", "VERSION\nabc", "COLUMN"}) {
+    std::string data = start + points;
+    data.resize(points.size());
+    writeTextFile(dir + "/fine.pcd", pcdHeader("3", "1", "3", "binary") + data);
+    EXPECT_EQ(loadCloud(dir + "/fine.pcd").cloud->size(), 3u) << start;
+  }
+}
+
 // Found by fuzzing (test/fuzz/corpus/ply_file/crash_lone_blue.ply): PCL packs 8-bit colours
 // into one rgb field that only "red" creates; a vertex with "blue" but no "red" made Debian's PCL
 // abort on an assertion (the whole process, not just the load).

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <locale>
 #include <map>
 #include <optional>
 #include <set>
@@ -308,8 +309,38 @@ void checkCompressedPcdData(const std::string& path, const HeaderText& text, std
   }
 }
 
+// PCL's header loop does not stop at DATA: it goes on reading the data as header lines, skipping
+// empty, comment and VERSION lines, until one whose first word it does not know. Data that starts
+// with a header keyword would rewrite the header PCL uses (found by fuzzing: binary data starting
+// with "COLUMNS" emptied PCL's field list, which PCL's reader then indexed past its end). No
+// writer produces such data by design, and the chance that real binary data spells a keyword is
+// negligible, so a file whose data PCL would read as header is rejected.
+void checkDataIsNotReadAsHeader(const std::string& path, std::uint64_t data_offset) {
+  static const char* const kPclHeaderKeywords[] = {"FIELDS", "COLUMNS", "SIZE",   "TYPE", "COUNT",
+                                                   "WIDTH",  "HEIGHT",  "VIEWPOINT", "POINTS", "DATA"};
+  std::ifstream in(path, std::ios::binary);
+  in.seekg(static_cast<std::streamoff>(data_offset));
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    std::istringstream words(line);
+    words.imbue(std::locale::classic());
+    std::string first;
+    words >> first;  // like PCL: the first whitespace-separated word, matched by prefix
+    if (first.compare(0, 1, "#") == 0 || first.compare(0, 7, "VERSION") == 0) continue;
+    for (const char* keyword : kPclHeaderKeywords) {
+      if (first.compare(0, std::strlen(keyword), keyword) == 0) {
+        throw InputError(path, "corrupt PCD data: it starts with the header keyword '" + std::string(keyword) +
+                                   "', which PCL would read as part of the header");
+      }
+    }
+    return;
+  }
+}
+
 void checkPcdData(const std::string& path, const HeaderText& text, const PcdHeader& header,
                   const PcdRecord& record, std::uint64_t points) {
+  checkDataIsNotReadAsHeader(path, text.data_offset);
   const std::uint64_t remaining = text.file_size - text.data_offset;
   if (header.data_type == "binary") {
     const std::uint64_t needed = points * record.bytes;  // <= 2e8 * 2^16: no wrap
