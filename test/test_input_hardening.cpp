@@ -190,6 +190,22 @@ TEST(InputHardening, PcdDataThatPclWouldReadAsHeaderIsRejected) {
   }
 }
 
+// Found by fuzzing (test/fuzz/corpus/ply_file/crash_vertex_list.ply): PCL sizes a per-vertex
+// list by the first vertex and aborts on an assertion when a later list is longer.
+TEST(InputHardening, PlyVertexListsAreRejected) {
+  const std::string dir = test_support::makeTempDir("hardening_ply_vertex_list");
+  const std::string lists = "property list uchar int view_indices\n";
+  writeTextFile(dir + "/lists.ply", plyHeader("ascii", "2", lists) + "0 0 1 1 7\n1 0 1 3 7 8 9\n");
+  expectCloudError(dir + "/lists.ply", "vertex property 'view_indices' is a list");
+  writeTextFile(dir + "/found.ply",
+                test_support::readTextFile(std::string(SOURCE_DIR) + "/test/fuzz/corpus/ply_file/crash_vertex_list.ply"));
+  expectCloudError(dir + "/found.ply", "is a list");
+  // Lists on other elements (faces) are fine: the cloud is the vertices.
+  writeTextFile(dir + "/faces.ply", plyHeader("ascii", "3", "element face 1\nproperty list uchar int vertex_indices\n") +
+                                        "0 0 1\n1 0 1\n0 1 1\n3 0 1 2\n");
+  EXPECT_EQ(loadCloud(dir + "/faces.ply").cloud->size(), 3u);
+}
+
 // Found by fuzzing (test/fuzz/corpus/ply_file/crash_lone_blue.ply): PCL packs 8-bit colours
 // into one rgb field that only "red" creates; a vertex with "blue" but no "red" made Debian's PCL
 // abort on an assertion (the whole process, not just the load).

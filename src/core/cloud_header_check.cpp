@@ -403,6 +403,12 @@ void addPlyProperty(const std::string& path, const Words& words, PlyHeader& head
     if (words[1] == "uchar" || words[1] == "uint8") element.uint8_scalars.push_back(words[2]);
     else element.uint8_scalars.push_back("");  // keeps "adjacent" meaning adjacent properties
   } else if (words.size() == 5 && words[1] == "list") {
+    // PCL sizes a vertex list field by the first vertex's list and asserts (aborting the
+    // process) when a later list is longer (found by fuzzing); point clouds carry no lists.
+    if (element.name == "vertex") {
+      throw InputError(path, "PLY header: vertex property '" + shortened(words[4]) +
+                                 "' is a list; per-point lists are not supported");
+    }
     element.min_binary_bytes += plyPropertyType(path, words[2]);
     plyPropertyType(path, words[3]);
     element.uint8_scalars.push_back("");
