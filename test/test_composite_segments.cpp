@@ -142,7 +142,8 @@ TEST(CompositeSegments, TheRestOfOneObjectFoundAloneIsTheOtherWhenApartOrMetAtCr
                                        mirrorWithinObject, markedScores, params),
             1u);
   // A flat link across the seam as well (a flush face): the rest may be the part's own, kept
-  // whole; two objects both found alone would still be split at that seam.
+  // whole; and even with both parts found alone, a face running on across the seam makes them
+  // one object.
   auto flush = chainNeighbours();
   flush[58].push_back(61);
   flush[61].push_back(58);
@@ -153,5 +154,41 @@ TEST(CompositeSegments, TheRestOfOneObjectFoundAloneIsTheOtherWhenApartOrMetAtCr
   EXPECT_EQ(one_body.size(), 1u);
   EXPECT_EQ(ss::splitCompositeSegments(one_body, {segment(0, 59, 2.0f), segment(60, 99, 3.0f)}, flush, creaseAtSeam,
                                        mirrorWithinObject, markedScores, params),
-            1u);
+            0u);
+}
+
+// Two parts that each have a symmetry of their own but run on into each other without a crease
+// (an L-shaped block's slab and upright, joined through the corner under the upright that
+// neither part took) are one object; the same parts joined only across creases are two.
+TEST(CompositeSegments, PartsJoinedWithoutACreaseThroughTheRestStayOneObject) {
+  // A corner 100..109 in neither part, linked to A at 55 and to B at 65.
+  std::vector<std::vector<int>> neighbours = chainNeighbours();
+  neighbours.resize(kPoints + 10);
+  for (int i = kPoints; i < kPoints + 10; ++i) {
+    if (i > kPoints) neighbours[i].push_back(i - 1);
+    if (i + 1 < kPoints + 10) neighbours[i].push_back(i + 1);
+  }
+  neighbours[55].push_back(kPoints);
+  neighbours[kPoints].push_back(55);
+  neighbours[kPoints + 9].push_back(65);
+  neighbours[65].push_back(kPoints + 9);
+  const ss::CandidateSegment whole = segment(0, kPoints + 9, 1.0f);
+  const std::vector<ss::CandidateSegment> parts = {segment(0, 59, 2.0f), segment(60, 99, 3.0f)};
+  ss::CompositeSegmentParams params;
+  params.min_seam_links = 1;
+
+  std::vector<ss::CandidateSegment> segments = {whole};
+  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, neighbours, creaseAtSeam, mirrorWithinObject, markedScores, params), 0u);
+  ASSERT_EQ(segments.size(), 1u);
+  EXPECT_EQ(segments[0].points.size(), 110u);
+
+  // The corner meets B at a crease too: every path from A to B crosses one.
+  const ss::CreaseTest creases = [](int a, int b) {
+    return creaseAtSeam(a, b) || (std::min(a, b) == 65 && std::max(a, b) == kPoints + 9);
+  };
+  segments = {whole};
+  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, neighbours, creases, mirrorWithinObject, markedScores, params), 1u);
+  ASSERT_EQ(segments.size(), 2u);
+  EXPECT_EQ(segments[0].points, segment(0, 59).points);
+  EXPECT_EQ(segments[1].points, segment(60, 99).points);
 }

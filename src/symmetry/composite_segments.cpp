@@ -29,6 +29,38 @@ bool apartOrCreased(const std::vector<int>& a, const std::vector<int>& b,
   return links < params.min_seam_links || creased >= min_crease_fraction * links;
 }
 
+/// Whether a path from `a` to `b` runs within `whole` over links that cross no crease. Two
+/// objects touch at creases; parts of one object that each have a symmetry of their own (an
+/// L-shaped block's slab and upright) meet at a crease too, but also run on into each other
+/// somewhere over a flat face or a convex edge, directly or through a corner neither part took.
+bool joinedWithoutCrease(const std::vector<int>& whole, const std::vector<int>& a, const std::vector<int>& b,
+                         const std::vector<std::vector<int>>& neighbours, const CreaseTest& crease) {
+  auto position = [&whole](int p) {
+    return static_cast<std::size_t>(std::lower_bound(whole.begin(), whole.end(), p) - whole.begin());
+  };
+  std::vector<char> seen(whole.size(), 0);
+  std::vector<int> frontier;
+  for (int p : a) {
+    if (!contains(whole, p) || contains(b, p)) continue;
+    seen[position(p)] = 1;
+    frontier.push_back(p);
+  }
+  while (!frontier.empty()) {
+    const int p = frontier.back();
+    frontier.pop_back();
+    if (p < 0 || static_cast<std::size_t>(p) >= neighbours.size()) continue;
+    for (int q : neighbours[p]) {
+      if (!contains(whole, q) || crease(p, q)) continue;
+      if (contains(b, q)) return true;
+      const std::size_t k = position(q);
+      if (seen[k]) continue;
+      seen[k] = 1;
+      frontier.push_back(q);
+    }
+  }
+  return false;
+}
+
 /// Whether `plane` mirrors more than the allowed share of `part`'s matched points onto `other`.
 bool mirroredOntoOther(const std::vector<int>& part, const std::vector<int>& other, const SymmetryPlane& plane,
                        const ReflectionMatch& match, const CompositeSegmentParams& params) {
@@ -86,6 +118,7 @@ std::optional<std::pair<CandidateSegment, CandidateSegment>> findSplit(
       const std::size_t covered = inside[x] + inside[y] - std::min(shared, std::min(inside[x], inside[y]));
       if (covered < params.min_coverage * size || covered <= best_covered) continue;
       if (!twoObjects(whole, a, b, params.min_crease_fraction, neighbours, crease, match, params)) continue;
+      if (joinedWithoutCrease(whole.points, a, b, neighbours, crease)) continue;
       best_pair = std::make_pair(nested[x], nested[y]);
       best_covered = covered;
     }

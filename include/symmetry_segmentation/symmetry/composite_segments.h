@@ -9,10 +9,12 @@
 // edge (a box's two halves, a bowl's rim), and the larger segment's plane mirrors each part onto
 // itself - two objects that happen to share a plane - rather than one part onto the other (the
 // two arms of a U-shaped object, the halves of a box seen around an occluder), the larger
-// segment is replaced by the two.
+// segment is replaced by the two. Two parts found alone must moreover be joined by creases
+// only: if any path between them within the larger segment crosses no crease, they are parts of
+// one object (an L-shaped block's slab and upright meet at a crease on the inside but run on
+// into each other along the outer faces, through the corner neither took).
 // Objects that meet flush on one flat face (a box on a box of the same footprint) show no crease
-// and stay merged: nothing in the geometry tells them from one taller box. The converse also
-// holds: an L-shaped block is, to the geometry, a board standing flush on a slab, and is split.
+// and stay merged: nothing in the geometry tells them from one taller box.
 #include <functional>
 #include <vector>
 
