@@ -9,6 +9,7 @@
 #include "symmetry_segmentation/segment_order.h"
 #include "symmetry_segmentation/stopwatch.h"
 #include "symmetry_segmentation/symmetry/composite_segments.h"
+#include "symmetry_segmentation/symmetry/island_segments.h"
 #include "symmetry_segmentation/symmetry/nested_segments.h"
 #include "symmetry_segmentation/symmetry/normal_edge_curves.h"
 #include "symmetry_segmentation/symmetry/plane_refinement.h"
@@ -91,12 +92,24 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
   });
   result.timing_ms.emplace_back("refinement", stage.lap());
 
+  // Islands one of the planes explains whole (island_segments.h), judged before the segments
+  // move on.
+  std::vector<CandidateSegment> island_segments;
+  if (params_.filter.island_gap > 0.0f) {
+    const SegmentScorer island_score = [&graph, this](const std::vector<int>& points, const SymmetryPlane& plane) {
+      return graph.scores(points, plane, params_.filter);
+    };
+    const auto islands = spatialIslands(prepared.cloud, params_.filter.island_gap, params_.filter.min_segment_points);
+    island_segments = explainedIslands(islands, candidates, island_score, params_.filter);
+  }
+  const std::size_t islands_explained = island_segments.size();
   std::vector<CandidateSegment> passing;
   std::size_t non_empty = 0;
   for (auto& candidate : candidates) {
     if (static_cast<int>(candidate.points.size()) >= params_.filter.min_segment_points) ++non_empty;
     if (passesFilter(candidate, params_.filter)) passing.push_back(std::move(candidate));
   }
+  for (CandidateSegment& island : island_segments) passing.push_back(std::move(island));
   const std::size_t passed_filter = passing.size();
   // Two objects one plane mirrors together, each also found alone (composite_segments.h).
   std::size_t split_composites = 0;
@@ -151,6 +164,7 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
                    {"graph_cuts", hypotheses.size() + std::count(cut_again.begin(), cut_again.end(), 1)},
                    {"segments_before_filtering", non_empty},
                    {"segments_after_filtering", passed_filter},
+                   {"islands_explained", islands_explained},
                    {"composite_segments_split", split_composites},
                    {"segments_after_deduplication", result.segments.size()}};
   return result;

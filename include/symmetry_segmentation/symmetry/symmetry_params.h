@@ -59,6 +59,9 @@ struct SymmetryFilterParams {
   float seam_crease_angle_deg = 30.0f;  ///< Concave links whose normals differ by more are creases
                                         ///< where two objects may meet (composite_segments.h);
                                         ///< 0 keeps composite segments whole.
+  float island_gap = 0.015f;            ///< Groups of points this far from all others that a
+                                        ///< found plane explains whole are proposed as segments
+                                        ///< (island_segments.h); 0 = off.
 };
 
 struct SymmetryParams {
