@@ -11,8 +11,11 @@
 namespace symmetry_segmentation {
 namespace {
 
-// A segment lies on an island when at least this share of it does.
+// A segment lends its plane to an island when at least this share of it lies on the island...
 constexpr float kMinShareOnIsland = 0.5f;
+// ...and it covers at least this share of the island: a piece of the object, not a detail of a
+// large island of many objects (whose scoring under every plane would cost more than the cuts).
+constexpr float kMinShareOfIsland = 0.3f;
 
 }  // namespace
 
@@ -44,7 +47,8 @@ std::vector<CandidateSegment> explainedIslands(const std::vector<std::vector<int
     bool found = false;
     for (const CandidateSegment& segment : segments) {
       if (segment.points.empty()) continue;
-      if (intersectionSize(segment.points, island) < kMinShareOnIsland * segment.points.size()) continue;
+      const std::size_t common = intersectionSize(segment.points, island);
+      if (common < kMinShareOnIsland * segment.points.size() || common < kMinShareOfIsland * island.size()) continue;
       CandidateSegment candidate;
       candidate.points = island;
       candidate.plane = segment.plane;

@@ -22,7 +22,8 @@ namespace symmetry_segmentation {
 /// clusters), each sorted, of at least `min_points`.
 std::vector<std::vector<int>> spatialIslands(const Cloud::ConstPtr& cloud, float gap, int min_points);
 
-/// For each island: the plane among `segments`' planes (of segments lying mostly on the island)
+/// For each island: the plane among `segments`' planes (of segments lying mostly on the island
+/// and covering a good share of it)
 /// under which the island scores best; the island with that plane when it passes `filter`.
 std::vector<CandidateSegment> explainedIslands(const std::vector<std::vector<int>>& islands,
                                                const std::vector<CandidateSegment>& segments,
