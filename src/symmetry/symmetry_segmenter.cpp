@@ -10,6 +10,7 @@
 #include "symmetry_segmentation/stopwatch.h"
 #include "symmetry_segmentation/symmetry/composite_segments.h"
 #include "symmetry_segmentation/symmetry/island_segments.h"
+#include "symmetry_segmentation/symmetry/mirror_twins.h"
 #include "symmetry_segmentation/symmetry/nested_segments.h"
 #include "symmetry_segmentation/symmetry/normal_edge_curves.h"
 #include "symmetry_segmentation/symmetry/plane_refinement.h"
@@ -111,6 +112,23 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
   }
   for (CandidateSegment& island : island_segments) passing.push_back(std::move(island));
   const std::size_t passed_filter = passing.size();
+  // Two like objects the plane between them mirrors onto each other (mirror_twins.h).
+  std::size_t split_twins = 0;
+  if (params_.filter.twin_free_fraction > 0.0f) {
+    const ReflectionMatch twin_match = [&graph](int index, const SymmetryPlane& plane) {
+      const ReflectionEvidence evidence = graph.dataTerm(index, plane);
+      return evidence.landing == ReflectionLanding::OnPoint ? evidence.match : -1;
+    };
+    const ObservedFree free = [&occupancy](const Eigen::Vector3f& point) {
+      return occupancy.classify(point) == Occupancy::Free;
+    };
+    const SegmentScorer twin_score = [&graph, this](const std::vector<int>& points, const SymmetryPlane& plane) {
+      return graph.scores(points, plane, params_.filter);
+    };
+    MirrorTwinParams twins;
+    twins.min_free_fraction = params_.filter.twin_free_fraction;
+    split_twins = splitMirrorTwins(passing, cloud, graph.neighbours(), twin_match, free, twin_score, twins);
+  }
   // Two objects one plane mirrors together, each also found alone (composite_segments.h).
   std::size_t split_composites = 0;
   if (params_.filter.seam_crease_angle_deg > 0.0f) {
@@ -165,6 +183,7 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
                    {"segments_before_filtering", non_empty},
                    {"segments_after_filtering", passed_filter},
                    {"islands_explained", islands_explained},
+                   {"mirror_twins_split", split_twins},
                    {"composite_segments_split", split_composites},
                    {"segments_after_deduplication", result.segments.size()}};
   return result;

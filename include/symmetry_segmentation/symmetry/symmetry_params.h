@@ -62,6 +62,10 @@ struct SymmetryFilterParams {
   float island_gap = 0.015f;            ///< Groups of points this far from all others that a
                                         ///< found plane explains whole are proposed as segments
                                         ///< (island_segments.h); 0 = off.
+  float twin_free_fraction = 0.6f;      ///< A segment in separate pieces that its plane mirrors
+                                        ///< onto each other with at least this share of the
+                                        ///< midpoints in observed free space is two objects
+                                        ///< (mirror_twins.h); 0 = off.
 };
 
 struct SymmetryParams {

@@ -1,0 +1,131 @@
+// Stage 5b': segments of two mirror-image objects split (see the header for why).
+#include "symmetry_segmentation/symmetry/mirror_twins.h"
+
+#include <algorithm>
+#include <map>
+
+namespace symmetry_segmentation {
+namespace {
+
+// Surface-connected pieces of `points` (sorted): piece index per position, and the count.
+std::vector<int> surfacePieces(const std::vector<int>& points, const std::vector<std::vector<int>>& neighbours,
+                               int& count) {
+  auto position = [&points](int p) -> int {
+    const auto it = std::lower_bound(points.begin(), points.end(), p);
+    return it != points.end() && *it == p ? static_cast<int>(it - points.begin()) : -1;
+  };
+  std::vector<int> piece(points.size(), -1);
+  count = 0;
+  std::vector<int> stack;
+  for (std::size_t seed = 0; seed < points.size(); ++seed) {
+    if (piece[seed] >= 0) continue;
+    piece[seed] = count;
+    stack.assign(1, static_cast<int>(seed));
+    while (!stack.empty()) {
+      const int k = stack.back();
+      stack.pop_back();
+      const int p = points[k];
+      if (p < 0 || static_cast<std::size_t>(p) >= neighbours.size()) continue;
+      for (int q : neighbours[p]) {
+        const int j = position(q);
+        if (j < 0 || piece[j] >= 0) continue;
+        piece[j] = count;
+        stack.push_back(j);
+      }
+    }
+    ++count;
+  }
+  return piece;
+}
+
+// The pieces of `segment` if they are mirror twins, else nothing.
+std::vector<std::vector<int>> twinPieces(const CandidateSegment& segment, const Cloud& cloud,
+                                         const std::vector<std::vector<int>>& neighbours, const ReflectionMatch& match,
+                                         const ObservedFree& free, const MirrorTwinParams& params) {
+  const std::vector<int>& points = segment.points;
+  int count = 0;
+  const std::vector<int> piece = surfacePieces(points, neighbours, count);
+  if (count < 2) return {};
+  std::vector<std::size_t> sizes(count, 0);
+  for (int p : piece) ++sizes[p];
+  std::vector<int> part(count, -1);
+  int parts = 0;
+  for (int p = 0; p < count; ++p) {
+    if (sizes[p] >= params.min_part_fraction * points.size()) part[p] = parts++;
+  }
+  if (parts < 2) return {};
+
+  auto position = [&points](int p) -> int {
+    const auto it = std::lower_bound(points.begin(), points.end(), p);
+    return it != points.end() && *it == p ? static_cast<int>(it - points.begin()) : -1;
+  };
+  int pairs = 0, free_pairs = 0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    if (part[piece[k]] < 0) continue;
+    const int q = match(points[k], segment.plane);
+    const int j = q < 0 ? -1 : position(q);
+    if (j < 0 || part[piece[j]] < 0 || part[piece[j]] == part[piece[k]]) continue;
+    ++pairs;
+    const Eigen::Vector3f middle = 0.5f * (cloud[points[k]].getVector3fMap() + cloud[q].getVector3fMap());
+    free_pairs += free(middle) ? 1 : 0;
+  }
+  if (pairs < params.min_pairs || free_pairs < params.min_free_fraction * pairs) return {};
+
+  // Small pieces join the part they have most links to; unlinked ones the largest part.
+  int largest = 0;
+  for (int p = 0; p < count; ++p) {
+    if (part[p] >= 0 && sizes[p] > sizes[largest]) largest = p;
+  }
+  std::vector<int> owner(count);
+  for (int p = 0; p < count; ++p) {
+    if (part[p] >= 0) {
+      owner[p] = part[p];
+      continue;
+    }
+    std::map<int, int> links;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      if (piece[k] != p) continue;
+      for (int q : neighbours[points[k]]) {
+        const int j = position(q);
+        if (j >= 0 && part[piece[j]] >= 0) ++links[part[piece[j]]];
+      }
+    }
+    owner[p] = part[largest];
+    int most = 0;
+    for (const auto& [target, n] : links) {
+      if (n > most) {
+        most = n;
+        owner[p] = target;
+      }
+    }
+  }
+  std::vector<std::vector<int>> result(parts);
+  for (std::size_t k = 0; k < points.size(); ++k) result[owner[piece[k]]].push_back(points[k]);
+  return result;
+}
+
+}  // namespace
+
+std::size_t splitMirrorTwins(std::vector<CandidateSegment>& segments, const Cloud& cloud,
+                             const std::vector<std::vector<int>>& neighbours, const ReflectionMatch& match,
+                             const ObservedFree& free, const SegmentScorer& score, const MirrorTwinParams& params) {
+  std::size_t split = 0;
+  const std::size_t original = segments.size();
+  for (std::size_t i = 0; i < original; ++i) {
+    std::vector<std::vector<int>> pieces = twinPieces(segments[i], cloud, neighbours, match, free, params);
+    if (pieces.empty()) continue;
+    ++split;
+    const SymmetryPlane plane = segments[i].plane;
+    for (std::size_t p = 0; p < pieces.size(); ++p) {
+      CandidateSegment piece;
+      piece.plane = plane;
+      piece.scores = score(pieces[p], plane);
+      piece.points = std::move(pieces[p]);
+      if (p == 0) segments[i] = std::move(piece);
+      else segments.push_back(std::move(piece));
+    }
+  }
+  return split;
+}
+
+}  // namespace symmetry_segmentation
