@@ -25,15 +25,38 @@ class Player {
     std::vector<char*> argv;
     for (auto& arg : args) argv.push_back(arg.data());
     argv.push_back(nullptr);
-    if (posix_spawnp(&pid_, "rosbag", nullptr, nullptr, argv.data(), environ) != 0) pid_ = -1;
+    // The player starts with no blocked signals and default handlers, whatever this process's
+    // threads have set up, so that SIGINT reaches it.
+    posix_spawnattr_t attributes;
+    posix_spawnattr_init(&attributes);
+    sigset_t none, defaults;
+    sigemptyset(&none);
+    sigemptyset(&defaults);
+    sigaddset(&defaults, SIGINT);
+    sigaddset(&defaults, SIGTERM);
+    posix_spawnattr_setsigmask(&attributes, &none);
+    posix_spawnattr_setsigdefault(&attributes, &defaults);
+    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
+    if (posix_spawnp(&pid_, "rosbag", nullptr, &attributes, argv.data(), environ) != 0) pid_ = -1;
+    posix_spawnattr_destroy(&attributes);
   }
   ~Player() { stop(); }
   bool running() const { return pid_ > 0; }
+  // SIGINT first, like a user; `rosbag play` has been seen to ignore it for minutes (once, on a
+  // loaded machine), so after a few seconds it is killed: a stuck player must not hang the test.
   void stop() {
     if (pid_ <= 0) return;
     kill(pid_, SIGINT);
     int status = 0;
-    waitpid(pid_, &status, 0);
+    const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(5.0);
+    while (waitpid(pid_, &status, WNOHANG) == 0) {
+      if (ros::WallTime::now() > deadline) {
+        kill(pid_, SIGKILL);
+        waitpid(pid_, &status, 0);
+        break;
+      }
+      ros::WallDuration(0.05).sleep();
+    }
     pid_ = -1;
   }
 
