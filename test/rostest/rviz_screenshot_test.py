@@ -48,6 +48,12 @@ class RvizScreenshot(unittest.TestCase):
             self.assertEqual(size, (1100, 720))
             if count > 1500:
                 break
+        # Under the sanitizers (scripts/test --sanitize) the node takes several seconds per cloud,
+        # longer than a loop of the 2 s bag, whose restart clears rviz's tf buffer: the markers'
+        # stamps are gone by the time they arrive and nothing is drawn. There the test checks the
+        # objects and that rviz renders the configuration, not what it draws.
+        if os.environ.get("SYMSEG_SANITIZE"):
+            return
         # Measured: about 6700 sampled pixels (every 4th) with the bundled scene; a handful
         # (icons) without segmented objects.
         self.assertGreater(count, 1500, "too few object-coloured pixels in %s" % output)
