@@ -93,15 +93,20 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
   });
   result.timing_ms.emplace_back("refinement", stage.lap());
 
+  // Scores and reflection matches the filtering stages share.
+  const SegmentScorer score = [&graph, this](const std::vector<int>& points, const SymmetryPlane& plane) {
+    return graph.scores(points, plane, params_.filter);
+  };
+  const ReflectionMatch match = [&graph](int index, const SymmetryPlane& plane) {
+    const ReflectionEvidence evidence = graph.dataTerm(index, plane);
+    return evidence.landing == ReflectionLanding::OnPoint ? evidence.match : -1;
+  };
   // Islands one of the planes explains whole (island_segments.h), judged before the segments
   // move on.
   std::vector<CandidateSegment> island_segments;
   if (params_.filter.island_gap > 0.0f) {
-    const SegmentScorer island_score = [&graph, this](const std::vector<int>& points, const SymmetryPlane& plane) {
-      return graph.scores(points, plane, params_.filter);
-    };
     const auto islands = spatialIslands(prepared.cloud, params_.filter.island_gap, params_.filter.min_segment_points);
-    island_segments = explainedIslands(islands, candidates, island_score, params_.filter);
+    island_segments = explainedIslands(islands, candidates, score, params_.filter);
   }
   const std::size_t islands_explained = island_segments.size();
   std::vector<CandidateSegment> passing;
@@ -115,19 +120,12 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
   // Two like objects the plane between them mirrors onto each other (mirror_twins.h).
   std::size_t split_twins = 0;
   if (params_.filter.twin_free_fraction > 0.0f) {
-    const ReflectionMatch twin_match = [&graph](int index, const SymmetryPlane& plane) {
-      const ReflectionEvidence evidence = graph.dataTerm(index, plane);
-      return evidence.landing == ReflectionLanding::OnPoint ? evidence.match : -1;
-    };
     const ObservedFree free = [&occupancy](const Eigen::Vector3f& point) {
       return occupancy.classify(point) == Occupancy::Free;
     };
-    const SegmentScorer twin_score = [&graph, this](const std::vector<int>& points, const SymmetryPlane& plane) {
-      return graph.scores(points, plane, params_.filter);
-    };
     MirrorTwinParams twins;
     twins.min_free_fraction = params_.filter.twin_free_fraction;
-    split_twins = splitMirrorTwins(passing, cloud, graph.neighbours(), twin_match, free, twin_score, twins);
+    split_twins = splitMirrorTwins(passing, cloud, graph.neighbours(), match, free, score, twins);
   }
   // Two objects one plane mirrors together, each also found alone (composite_segments.h).
   std::size_t split_composites = 0;
@@ -141,13 +139,6 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
       return n_p.dot(n_q) < min_crease_cos && !isConvexLink(p.getVector3fMap(), n_p, q.getVector3fMap(), n_q);
     };
     const std::vector<CandidateSegment> parts = passing;
-    const ReflectionMatch match = [&graph](int index, const SymmetryPlane& plane) {
-      const ReflectionEvidence evidence = graph.dataTerm(index, plane);
-      return evidence.landing == ReflectionLanding::OnPoint ? evidence.match : -1;
-    };
-    const SegmentScorer score = [&graph, this](const std::vector<int>& points, const SymmetryPlane& plane) {
-      return graph.scores(points, plane, params_.filter);
-    };
     split_composites = splitCompositeSegments(passing, parts, graph.neighbours(), crease, match, score);
   }
   // Take objects the cut glued onto another object's segment back out of it (nested_segments.h).
