@@ -76,7 +76,7 @@ const std::map<std::string, Setter>& setters() {
 #define SYMSEG_FILTER(name) {"symmetry.filter." #name, symmetryField(&SymmetryParams::filter, &SymmetryFilterParams::name)}
       SYMSEG_FILTER(s_occl), SYMSEG_FILTER(s_smooth), SYMSEG_FILTER(smooth_normal_angle_deg),
       SYMSEG_FILTER(min_segment_points), SYMSEG_FILTER(duplicate_overlap), SYMSEG_FILTER(seam_crease_angle_deg),
-      SYMSEG_FILTER(island_gap), SYMSEG_FILTER(twin_free_fraction),
+      SYMSEG_FILTER(island_gap), SYMSEG_FILTER(twin_free_fraction), SYMSEG_FILTER(color_seam_difference),
 #undef SYMSEG_FILTER
   };
   return table;
@@ -231,6 +231,7 @@ void validateSymmetryRest(const SymmetryParams& sym) {
   requireRange("symmetry.filter.seam_crease_angle_deg", sym.filter.seam_crease_angle_deg, 0.0, 180.0);
   requireRange("symmetry.filter.island_gap", sym.filter.island_gap, 0.0, 0.2);
   requireRange("symmetry.filter.twin_free_fraction", sym.filter.twin_free_fraction, 0.0, 1.0);
+  requireRange("symmetry.filter.color_seam_difference", sym.filter.color_seam_difference, 0.0, 200.0);
   requireRange("symmetry.threads", sym.threads, 0, 1024);
 }
 

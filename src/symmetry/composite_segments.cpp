@@ -35,14 +35,12 @@ bool apartOrCreased(const std::vector<int>& a, const std::vector<int>& b,
 /// somewhere over a flat face or a convex edge, directly or through a corner neither part took.
 bool joinedWithoutCrease(const std::vector<int>& whole, const std::vector<int>& a, const std::vector<int>& b,
                          const std::vector<std::vector<int>>& neighbours, const CreaseTest& crease) {
-  auto position = [&whole](int p) {
-    return static_cast<std::size_t>(std::lower_bound(whole.begin(), whole.end(), p) - whole.begin());
-  };
   std::vector<char> seen(whole.size(), 0);
   std::vector<int> frontier;
   for (int p : a) {
-    if (!contains(whole, p) || contains(b, p)) continue;
-    seen[position(p)] = 1;
+    const int k = positionIn(whole, p);
+    if (k < 0 || contains(b, p)) continue;
+    seen[k] = 1;
     frontier.push_back(p);
   }
   while (!frontier.empty()) {
@@ -50,9 +48,9 @@ bool joinedWithoutCrease(const std::vector<int>& whole, const std::vector<int>& 
     frontier.pop_back();
     if (p < 0 || static_cast<std::size_t>(p) >= neighbours.size()) continue;
     for (int q : neighbours[p]) {
-      if (!contains(whole, q) || crease(p, q)) continue;
+      const int k = positionIn(whole, q);
+      if (k < 0 || crease(p, q)) continue;
       if (contains(b, q)) return true;
-      const std::size_t k = position(q);
       if (seen[k]) continue;
       seen[k] = 1;
       frontier.push_back(q);

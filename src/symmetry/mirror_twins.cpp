@@ -4,16 +4,14 @@
 #include <algorithm>
 #include <map>
 
+#include "symmetry_segmentation/symmetry/sorted_indices.h"
+
 namespace symmetry_segmentation {
 namespace {
 
 // Surface-connected pieces of `points` (sorted): piece index per position, and the count.
 std::vector<int> surfacePieces(const std::vector<int>& points, const std::vector<std::vector<int>>& neighbours,
                                int& count) {
-  auto position = [&points](int p) -> int {
-    const auto it = std::lower_bound(points.begin(), points.end(), p);
-    return it != points.end() && *it == p ? static_cast<int>(it - points.begin()) : -1;
-  };
   std::vector<int> piece(points.size(), -1);
   count = 0;
   std::vector<int> stack;
@@ -27,7 +25,7 @@ std::vector<int> surfacePieces(const std::vector<int>& points, const std::vector
       const int p = points[k];
       if (p < 0 || static_cast<std::size_t>(p) >= neighbours.size()) continue;
       for (int q : neighbours[p]) {
-        const int j = position(q);
+        const int j = positionIn(points, q);
         if (j < 0 || piece[j] >= 0) continue;
         piece[j] = count;
         stack.push_back(j);
@@ -55,15 +53,11 @@ std::vector<std::vector<int>> twinPieces(const CandidateSegment& segment, const 
   }
   if (parts < 2) return {};
 
-  auto position = [&points](int p) -> int {
-    const auto it = std::lower_bound(points.begin(), points.end(), p);
-    return it != points.end() && *it == p ? static_cast<int>(it - points.begin()) : -1;
-  };
   int pairs = 0, free_pairs = 0;
   for (std::size_t k = 0; k < points.size(); ++k) {
     if (part[piece[k]] < 0) continue;
     const int q = match(points[k], segment.plane);
-    const int j = q < 0 ? -1 : position(q);
+    const int j = q < 0 ? -1 : positionIn(points, q);
     if (j < 0 || part[piece[j]] < 0 || part[piece[j]] == part[piece[k]]) continue;
     ++pairs;
     const Eigen::Vector3f middle = 0.5f * (cloud[points[k]].getVector3fMap() + cloud[q].getVector3fMap());
@@ -86,7 +80,7 @@ std::vector<std::vector<int>> twinPieces(const CandidateSegment& segment, const 
     for (std::size_t k = 0; k < points.size(); ++k) {
       if (piece[k] != p) continue;
       for (int q : neighbours[points[k]]) {
-        const int j = position(q);
+        const int j = positionIn(points, q);
         if (j >= 0 && part[piece[j]] >= 0) ++links[part[piece[j]]];
       }
     }

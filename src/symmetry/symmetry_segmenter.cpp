@@ -8,6 +8,7 @@
 #include "symmetry_segmentation/preprocessing.h"
 #include "symmetry_segmentation/segment_order.h"
 #include "symmetry_segmentation/stopwatch.h"
+#include "symmetry_segmentation/symmetry/color_seams.h"
 #include "symmetry_segmentation/symmetry/composite_segments.h"
 #include "symmetry_segmentation/symmetry/island_segments.h"
 #include "symmetry_segmentation/symmetry/mirror_twins.h"
@@ -109,6 +110,10 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
     island_segments = explainedIslands(islands, candidates, score, params_.filter);
   }
   const std::size_t islands_explained = island_segments.size();
+  // Planes a part split off at a colour seam may take (color_seams.h).
+  const bool split_colors = scene.has_color && params_.filter.color_seam_difference > 0.0f;
+  std::vector<CandidateSegment> found;
+  if (split_colors) found = candidates;
   std::vector<CandidateSegment> passing;
   std::size_t non_empty = 0;
   for (auto& candidate : candidates) {
@@ -155,6 +160,15 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
   passing.erase(std::remove_if(passing.begin(), passing.end(),
                                [](const CandidateSegment& c) { return c.points.empty(); }),
                 passing.end());
+  // Flush objects of different colours (color_seams.h).
+  std::size_t split_colored = 0;
+  if (split_colors) {
+    ColorSeamParams colors;
+    colors.max_link_difference = params_.filter.color_seam_difference;
+    colors.min_part_points = params_.filter.min_segment_points;
+    colors.flat_link_angle_deg = params_.filter.smooth_normal_angle_deg;
+    split_colored = splitAtColorSeams(passing, found, cloud, graph.neighbours(), match, score, colors);
+  }
   const auto kept = removeDuplicates(std::move(passing), params_.filter);
   for (const auto& candidate : kept) {
     Segment segment;
@@ -176,6 +190,7 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
                    {"islands_explained", islands_explained},
                    {"mirror_twins_split", split_twins},
                    {"composite_segments_split", split_composites},
+                   {"color_seams_split", split_colored},
                    {"segments_after_deduplication", result.segments.size()}};
   return result;
 }

@@ -13,8 +13,8 @@
 // only: if any path between them within the larger segment crosses no crease, they are parts of
 // one object (an L-shaped block's slab and upright meet at a crease on the inside but run on
 // into each other along the outer faces, through the corner neither took).
-// Objects that meet flush on one flat face (a box on a box of the same footprint) show no crease
-// and stay merged: nothing in the geometry tells them from one taller box.
+// Objects that meet flush on one flat face (a box on a box of the same footprint) show no crease:
+// nothing in the geometry tells them from one taller box, only their colours (color_seams.h).
 #include <functional>
 #include <vector>
 

@@ -35,6 +35,12 @@ inline std::vector<int> difference(const std::vector<int>& a, const std::vector<
   return rest;
 }
 
+/// Position of `value` in `sorted`, or -1 if it is not there.
+inline int positionIn(const std::vector<int>& sorted, int value) {
+  const auto it = std::lower_bound(sorted.begin(), sorted.end(), value);
+  return it != sorted.end() && *it == value ? static_cast<int>(it - sorted.begin()) : -1;
+}
+
 inline bool contains(const std::vector<int>& sorted, int value) {
   return std::binary_search(sorted.begin(), sorted.end(), value);
 }

@@ -66,6 +66,10 @@ struct SymmetryFilterParams {
                                         ///< onto each other with at least this share of the
                                         ///< midpoints in observed free space is two objects
                                         ///< (mirror_twins.h); 0 = off.
+  float color_seam_difference = 15.0f;  ///< Linked points closer in colour (CIELAB difference,
+                                        ///< lightness at half weight) are one colour region; a
+                                        ///< segment of large regions meeting over flat faces is
+                                        ///< split into them (color_seams.h); 0 = off.
 };
 
 struct SymmetryParams {

@@ -1,0 +1,304 @@
+// Stage 5d: segments of flush objects split at their colour seams (see the header for why).
+#include "symmetry_segmentation/symmetry/color_seams.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <utility>
+
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+
+#include "disjoint_sets.h"
+#include "symmetry_segmentation/symmetry/smoothness_weight.h"
+#include "symmetry_segmentation/symmetry/sorted_indices.h"
+
+namespace symmetry_segmentation {
+namespace {
+
+// sRGB (0-255) to CIELAB (D65 white), the space in which equal distances look about equally
+// different.
+Eigen::Vector3f toLab(const PointT& point) {
+  auto linear = [](std::uint8_t channel) {
+    const float c = channel / 255.0f;
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+  };
+  const float r = linear(point.r), g = linear(point.g), b = linear(point.b);
+  const float x = (0.4124f * r + 0.3576f * g + 0.1805f * b) / 0.95047f;
+  const float y = 0.2126f * r + 0.7152f * g + 0.0722f * b;
+  const float z = (0.0193f * r + 0.1192f * g + 0.9505f * b) / 1.08883f;
+  auto f = [](float t) { return t > 0.008856f ? std::cbrt(t) : 7.787f * t + 16.0f / 116.0f; };
+  return {116.0f * f(y) - 16.0f, 500.0f * (f(x) - f(y)), 200.0f * (f(y) - f(z))};
+}
+
+float colorDifference(const Eigen::Vector3f& lab_a, const Eigen::Vector3f& lab_b) {
+  const Eigen::Vector3f d = lab_a - lab_b;
+  return std::sqrt(0.25f * d.x() * d.x() + d.y() * d.y() + d.z() * d.z());
+}
+
+// Calls visit(j, k) once for every link between segment positions j < k.
+template <typename Visit>
+void forEachLink(const std::vector<int>& points, const std::vector<std::vector<int>>& neighbours, Visit visit) {
+  for (std::size_t j = 0; j < points.size(); ++j) {
+    const int p = points[j];
+    if (p < 0 || static_cast<std::size_t>(p) >= neighbours.size()) continue;
+    for (int q : neighbours[p]) {
+      if (q <= p) continue;
+      const int k = positionIn(points, q);
+      if (k >= 0) visit(static_cast<int>(j), k);
+    }
+  }
+}
+
+// Part per segment position: the large uniform-colour regions, each grown over the segment's
+// links into the small regions around it (print, blended colours at the seam). Empty unless
+// there are two or more and together they make up most of the segment.
+std::vector<int> largeColorRegions(const std::vector<int>& points, const std::vector<Eigen::Vector3f>& lab,
+                                   const std::vector<std::vector<int>>& neighbours, const ColorSeamParams& params,
+                                   int& count) {
+  DisjointSets regions(points.size());
+  forEachLink(points, neighbours, [&](int j, int k) {
+    if (colorDifference(lab[j], lab[k]) <= params.max_link_difference) regions.unite(j, k);
+  });
+  std::map<int, int> sizes;
+  for (std::size_t j = 0; j < points.size(); ++j) ++sizes[regions.find(static_cast<int>(j))];
+  const double min_size = std::max<double>(params.min_part_points, params.min_part_fraction * points.size());
+  std::map<int, int> part_of_root;
+  std::size_t covered = 0;
+  for (const auto& [root, size] : sizes) {
+    if (size < min_size) continue;
+    part_of_root.emplace(root, static_cast<int>(part_of_root.size()));
+    covered += size;
+  }
+  count = static_cast<int>(part_of_root.size());
+  if (count < 2 || covered < params.min_coverage * points.size()) return {};
+
+  std::vector<int> part(points.size(), -1);
+  std::vector<int> frontier;
+  for (std::size_t j = 0; j < points.size(); ++j) {
+    const auto it = part_of_root.find(regions.find(static_cast<int>(j)));
+    if (it == part_of_root.end()) continue;
+    part[j] = it->second;
+    frontier.push_back(static_cast<int>(j));
+  }
+  // Breadth first, so each small region goes to the large regions nearest over the surface.
+  for (std::size_t head = 0; head < frontier.size(); ++head) {
+    const int j = frontier[head];
+    const int p = points[j];
+    if (p < 0 || static_cast<std::size_t>(p) >= neighbours.size()) continue;
+    for (int q : neighbours[p]) {
+      const int k = positionIn(points, q);
+      if (k < 0 || part[k] >= 0) continue;
+      part[k] = part[j];
+      frontier.push_back(k);
+    }
+  }
+  // Points no link reaches (a detached speck) join the largest region.
+  const int largest = part_of_root.at(std::max_element(sizes.begin(), sizes.end(), [](const auto& a, const auto& b) {
+                                        return a.second < b.second;
+                                      })->first);
+  for (int& p : part) {
+    if (p < 0) p = largest;
+  }
+  return part;
+}
+
+// Whether a seam runs right across both parts it divides: in some direction within the seam's
+// plane it spans most of each part's extent. Where a box stands on a box of its footprint the
+// seam is the whole footprint's outline; between boxes of one depth in a row it runs from the
+// front to the back; the colour edge round a bottle's cap is a ring much narrower than the bottle.
+bool seamSpansBoth(const std::vector<int>& ends, const std::vector<int>& points, const std::vector<int>& part,
+                   int a, int b, const Cloud& cloud, float min_span) {
+  Eigen::Vector3f mean = Eigen::Vector3f::Zero();
+  for (int j : ends) mean += cloud[points[j]].getVector3fMap();
+  mean /= static_cast<float>(ends.size());
+  Eigen::Matrix3f scatter = Eigen::Matrix3f::Zero();
+  for (int j : ends) {
+    const Eigen::Vector3f d = cloud[points[j]].getVector3fMap() - mean;
+    scatter += d * d.transpose();
+  }
+  // Eigenvalues ascending: the last two axes span the seam's plane.
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3f> axes(scatter);
+  const Eigen::Vector3f first = axes.eigenvectors().col(2);
+  const Eigen::Vector3f second = axes.eigenvectors().col(1);
+  constexpr int kDirections = 12;
+  for (int step = 0; step < kDirections; ++step) {
+    const float angle = static_cast<float>(M_PI) * step / kDirections;
+    const Eigen::Vector3f direction = std::cos(angle) * first + std::sin(angle) * second;
+    auto extent = [&](auto keep) {
+      float low = std::numeric_limits<float>::max(), high = std::numeric_limits<float>::lowest();
+      for (std::size_t j = 0; j < points.size(); ++j) {
+        if (!keep(static_cast<int>(j))) continue;
+        const float t = direction.dot(cloud[points[j]].getVector3fMap());
+        low = std::min(low, t);
+        high = std::max(high, t);
+      }
+      return high > low ? high - low : 0.0f;
+    };
+    float low = std::numeric_limits<float>::max(), high = std::numeric_limits<float>::lowest();
+    for (int j : ends) {
+      const float t = direction.dot(cloud[points[j]].getVector3fMap());
+      low = std::min(low, t);
+      high = std::max(high, t);
+    }
+    const float seam = high - low;
+    if (seam >= min_span * extent([&](int j) { return part[j] == a; }) &&
+        seam >= min_span * extent([&](int j) { return part[j] == b; })) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// Groups the parts into objects and renumbers `part` to 0..count-1; returns the count. Parts
+// meeting mostly at creases are one object's differently coloured parts. Only a mostly flat
+// seam says two parts are different objects; a part with no such seam to any other (the pieces
+// of one box seen either side of a board) joins the part closest to it in colour.
+int objectsAtFlatSeams(const std::vector<int>& points, const std::vector<Eigen::Vector3f>& lab, const Cloud& cloud,
+                       const std::vector<std::vector<int>>& neighbours, const ColorSeamParams& params,
+                       std::vector<int>& part, int count) {
+  const float min_flat_cos = std::cos(params.flat_link_angle_deg * static_cast<float>(M_PI) / 180.0f);
+  struct Seam {
+    int links = 0;
+    int flat_links = 0;
+    int convex_links = 0;
+    std::vector<int> ends;  // segment positions at either end of its links
+  };
+  std::map<std::pair<int, int>, Seam> seams;  // keyed by (part a < part b)
+  forEachLink(points, neighbours, [&](int j, int k) {
+    if (part[j] == part[k]) return;
+    Seam& seam = seams[std::minmax(part[j], part[k])];
+    ++seam.links;
+    const auto& p = cloud[points[j]];
+    const auto& q = cloud[points[k]];
+    if (p.getNormalVector3fMap().dot(q.getNormalVector3fMap()) > min_flat_cos) {
+      ++seam.flat_links;
+    } else if (isConvexLink(p.getVector3fMap(), p.getNormalVector3fMap(), q.getVector3fMap(),
+                            q.getNormalVector3fMap())) {
+      ++seam.convex_links;
+    }
+    seam.ends.push_back(j);
+    seam.ends.push_back(k);
+  });
+  DisjointSets objects(count);
+  std::vector<std::pair<int, int>> flat_seams;
+  for (const auto& [pair, seam] : seams) {
+    if (seam.links < params.min_seam_links) continue;
+    // Concave links are where objects meet anyway (a short box's top against its taller
+    // neighbour's side); convex ones are one object's own edges (a can's rim round its lid).
+    const bool flat = seam.flat_links >= params.min_seam_links &&
+                      seam.flat_links >= params.min_flat_seam_fraction * (seam.flat_links + seam.convex_links);
+    if (flat && seamSpansBoth(seam.ends, points, part, pair.first, pair.second, cloud, params.min_seam_span)) {
+      flat_seams.push_back(pair);
+    } else {
+      objects.unite(pair.first, pair.second);
+    }
+  }
+  std::vector<char> apart(count, 0);
+  for (const auto& [a, b] : flat_seams) {
+    if (objects.find(a) == objects.find(b)) continue;
+    apart[objects.find(a)] = 1;
+    apart[objects.find(b)] = 1;
+  }
+  std::vector<Eigen::Vector3f> color_sum(count, Eigen::Vector3f::Zero());
+  std::vector<int> size(count, 0);
+  for (std::size_t j = 0; j < points.size(); ++j) {
+    color_sum[objects.find(part[j])] += lab[j];
+    ++size[objects.find(part[j])];
+  }
+  for (int g = 0; g < count; ++g) {
+    if (objects.find(g) != g || apart[g]) continue;
+    int closest = -1;
+    float least = std::numeric_limits<float>::max();
+    for (int h = 0; h < count; ++h) {
+      if (h == g || objects.find(h) != h) continue;
+      const float difference = colorDifference(color_sum[g] / size[g], color_sum[h] / size[h]);
+      if (difference < least) {
+        least = difference;
+        closest = h;
+      }
+    }
+    if (closest >= 0) objects.unite(g, closest);
+  }
+  std::map<int, int> renumbered;
+  for (int& p : part) p = renumbered.emplace(objects.find(p), static_cast<int>(renumbered.size())).first->second;
+  return static_cast<int>(renumbered.size());
+}
+
+// How much `points` contradicts `plane`: reflections into free space (as the occlusion score
+// grades them) plus reflections onto points outside it.
+float contradiction(const std::vector<int>& points, const SymmetryPlane& plane, const ReflectionMatch& match,
+                    const SegmentScorer& score) {
+  int foreign = 0;
+  for (int p : points) {
+    const int q = match(p, plane);
+    if (q >= 0 && !contains(points, q)) ++foreign;
+  }
+  return (1.0f - score(points, plane).occlusion) + static_cast<float>(foreign) / points.size();
+}
+
+CandidateSegment withBestPlane(std::vector<int> points, const SymmetryPlane& own_plane,
+                               const std::vector<CandidateSegment>& found, const ReflectionMatch& match,
+                               const SegmentScorer& score, const ColorSeamParams& params) {
+  SymmetryPlane best = own_plane;
+  float least = contradiction(points, own_plane, match, score);
+  for (const CandidateSegment& other : found) {
+    if (other.points.empty() || intersectionSize(other.points, points) < params.min_plane_share * points.size()) continue;
+    const float value = contradiction(points, other.plane, match, score);
+    if (value < least) {
+      least = value;
+      best = other.plane;
+    }
+  }
+  CandidateSegment segment;
+  segment.plane = best;
+  segment.scores = score(points, best);
+  segment.points = std::move(points);
+  return segment;
+}
+
+}  // namespace
+
+std::size_t splitAtColorSeams(std::vector<CandidateSegment>& segments, const std::vector<CandidateSegment>& found,
+                              const Cloud& cloud, const std::vector<std::vector<int>>& neighbours,
+                              const ReflectionMatch& match, const SegmentScorer& score,
+                              const ColorSeamParams& params) {
+  std::size_t split = 0;
+  const std::size_t original = segments.size();
+  for (std::size_t i = 0; i < original; ++i) {
+    const std::vector<int>& points = segments[i].points;
+    int count = 0;
+    std::vector<Eigen::Vector3f> lab(points.size());
+    for (std::size_t j = 0; j < points.size(); ++j) lab[j] = toLab(cloud[points[j]]);
+    std::vector<int> part = largeColorRegions(points, lab, neighbours, params, count);
+    if (part.empty()) continue;
+    count = objectsAtFlatSeams(points, lab, cloud, neighbours, params, part, count);
+    if (count < 2) continue;
+    std::vector<std::vector<int>> pieces(count);
+    for (std::size_t j = 0; j < points.size(); ++j) pieces[part[j]].push_back(points[j]);
+    // The seam is where the objects end, not a cut through one surface: its smooth links do not
+    // count against either part's smoothness score.
+    std::vector<int> seam_links(count, 0);
+    const float min_smooth_cos = std::cos(params.flat_link_angle_deg * static_cast<float>(M_PI) / 180.0f);
+    forEachLink(points, neighbours, [&](int j, int k) {
+      if (part[j] == part[k] ||
+          cloud[points[j]].getNormalVector3fMap().dot(cloud[points[k]].getNormalVector3fMap()) <= min_smooth_cos) {
+        return;
+      }
+      ++seam_links[part[j]];
+      ++seam_links[part[k]];
+    });
+    ++split;
+    const SymmetryPlane plane = segments[i].plane;
+    for (std::size_t p = 0; p < pieces.size(); ++p) {
+      CandidateSegment piece = withBestPlane(std::move(pieces[p]), plane, found, match, score, params);
+      piece.scores.smoothness = std::max(0.0f, piece.scores.smoothness - static_cast<float>(seam_links[p]) / piece.points.size());
+      if (p == 0) segments[i] = std::move(piece);
+      else segments.push_back(std::move(piece));
+    }
+  }
+  return split;
+}
+
+}  // namespace symmetry_segmentation

@@ -1,0 +1,243 @@
+// Stage 5d: a segment of flush objects is split where its colour changes over a flat face
+// running across both; colour edges on one object (a lid at the rim, a cap on a neck, print)
+// and an object seen in separate pieces leave it whole.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <numeric>
+#include <random>
+
+#include "symmetry_segmentation/symmetry/color_seams.h"
+#include "symmetry_segmentation/symmetry/symmetry_plane.h"
+
+namespace ss = symmetry_segmentation;
+
+namespace {
+
+using Rgb = std::array<std::uint8_t, 3>;
+const Rgb kRed{{200, 40, 40}};
+const Rgb kBlue{{40, 120, 200}};
+
+struct Box {
+  Eigen::Vector3f low, high;
+  Rgb color;
+  bool contains(const Eigen::Vector3f& p) const {
+    return (p.array() >= low.array() - 1e-4f).all() && (p.array() <= high.array() + 1e-4f).all();
+  }
+};
+
+// The visible surface of resting boxes, sampled every centimetre (cell centres): every face but
+// the bottom, without what lies on or in another box (a shared face is no surface).
+ss::Cloud boxSurfaces(const std::vector<Box>& boxes) {
+  ss::Cloud cloud;
+  for (std::size_t b = 0; b < boxes.size(); ++b) {
+    const Box& box = boxes[b];
+    for (int axis = 0; axis < 3; ++axis) {
+      for (int side = 0; side < 2; ++side) {
+        if (axis == 2 && side == 0) continue;
+        const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+        const int nu = static_cast<int>(std::lround((box.high[u] - box.low[u]) / 0.01f));
+        const int nv = static_cast<int>(std::lround((box.high[v] - box.low[v]) / 0.01f));
+        for (int i = 0; i < nu; ++i) {
+          for (int j = 0; j < nv; ++j) {
+            Eigen::Vector3f p;
+            p[axis] = side ? box.high[axis] : box.low[axis];
+            p[u] = box.low[u] + 0.005f + 0.01f * i;
+            p[v] = box.low[v] + 0.005f + 0.01f * j;
+            bool hidden = false;
+            for (std::size_t o = 0; o < boxes.size(); ++o) hidden = hidden || (o != b && boxes[o].contains(p));
+            if (hidden) continue;
+            ss::PointT point;
+            point.getVector3fMap() = p;
+            point.getNormalVector3fMap() = Eigen::Vector3f::Unit(axis) * (side ? 1.0f : -1.0f);
+            point.r = box.color[0];
+            point.g = box.color[1];
+            point.b = box.color[2];
+            cloud.push_back(point);
+          }
+        }
+      }
+    }
+  }
+  return cloud;
+}
+
+std::vector<std::vector<int>> linksWithin(const ss::Cloud& cloud, float radius) {
+  std::vector<std::vector<int>> neighbours(cloud.size());
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    for (std::size_t j = 0; j < cloud.size(); ++j) {
+      if (i != j && (cloud[i].getVector3fMap() - cloud[j].getVector3fMap()).norm() < radius) {
+        neighbours[i].push_back(static_cast<int>(j));
+      }
+    }
+  }
+  return neighbours;
+}
+
+ss::SymmetryPlane plane(const Eigen::Vector3f& normal, float distance) {
+  ss::SymmetryPlane result;
+  result.normal = normal.normalized();
+  result.distance = distance;
+  return result;
+}
+
+ss::CandidateSegment everything(const ss::Cloud& cloud, const ss::SymmetryPlane& segment_plane) {
+  ss::CandidateSegment segment;
+  segment.points.resize(cloud.size());
+  std::iota(segment.points.begin(), segment.points.end(), 0);
+  segment.plane = segment_plane;
+  return segment;
+}
+
+// The point nearest a point's mirror image, if it is within half a centimetre.
+ss::ReflectionMatch matchIn(const ss::Cloud& cloud) {
+  return [&cloud](int index, const ss::SymmetryPlane& mirror) {
+    const Eigen::Vector3f image = ss::reflectPoint(mirror, cloud[index].getVector3fMap());
+    int best = -1;
+    float nearest = 0.005f;
+    for (std::size_t j = 0; j < cloud.size(); ++j) {
+      const float d = (cloud[j].getVector3fMap() - image).norm();
+      if (d < nearest) {
+        nearest = d;
+        best = static_cast<int>(j);
+      }
+    }
+    return best;
+  };
+}
+
+ss::SegmentScores unitScores(const std::vector<int>&, const ss::SymmetryPlane&) {
+  ss::SegmentScores scores;
+  scores.occlusion = 1.0f;
+  scores.smoothness = 0.0f;
+  return scores;
+}
+
+std::vector<int> pointsOfColor(const ss::Cloud& cloud, const Rgb& color) {
+  std::vector<int> points;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (cloud[i].r == color[0] && cloud[i].g == color[1] && cloud[i].b == color[2]) points.push_back(static_cast<int>(i));
+  }
+  return points;
+}
+
+// A 10 x 8 cm box 6 cm tall with a box of the same footprint on it: one taller box to the shape.
+std::vector<Box> boxOnBox(const Rgb& upper_color) {
+  return {Box{{-0.05f, -0.04f, 0.0f}, {0.05f, 0.04f, 0.06f}, kRed},
+          Box{{-0.05f, -0.04f, 0.06f}, {0.05f, 0.04f, 0.12f}, upper_color}};
+}
+
+const ss::SymmetryPlane kAcross = plane(Eigen::Vector3f::UnitX(), 0.0f);
+
+std::size_t split(std::vector<ss::CandidateSegment>& segments, const ss::Cloud& cloud,
+                  const std::vector<ss::CandidateSegment>& found = {}) {
+  return ss::splitAtColorSeams(segments, found, cloud, linksWithin(cloud, 0.015f), matchIn(cloud), unitScores);
+}
+
+}  // namespace
+
+TEST(ColorSeams, ABoxOnABoxOfTheSameFootprintIsTwoObjects) {
+  const ss::Cloud cloud = boxSurfaces(boxOnBox(kBlue));
+  std::vector<ss::CandidateSegment> segments = {everything(cloud, kAcross)};
+  EXPECT_EQ(split(segments, cloud), 1u);
+  ASSERT_EQ(segments.size(), 2u);
+  EXPECT_EQ(segments[0].points, pointsOfColor(cloud, kRed));
+  EXPECT_EQ(segments[1].points, pointsOfColor(cloud, kBlue));
+  for (const auto& segment : segments) {
+    EXPECT_LT(ss::planeAngleDeg(segment.plane, kAcross), 1e-3f) << "the shared plane fits each box";
+    EXPECT_FLOAT_EQ(segment.scores.occlusion, 1.0f) << "each part is scored";
+  }
+}
+
+TEST(ColorSeams, ABoxOnABoxOfOneColourStaysOneTallBox) {
+  const ss::Cloud cloud = boxSurfaces(boxOnBox(kRed));
+  std::vector<ss::CandidateSegment> segments = {everything(cloud, kAcross)};
+  EXPECT_EQ(split(segments, cloud), 0u);
+  EXPECT_EQ(segments.size(), 1u);
+}
+
+TEST(ColorSeams, EachPartTakesThePlaneItContradictsLeast) {
+  // The stack's horizontal mid-plane mirrors the lower box onto the upper one: no plane of
+  // either alone. A segment found on the stack brings the vertical plane both share.
+  const ss::Cloud cloud = boxSurfaces(boxOnBox(kBlue));
+  const ss::SymmetryPlane between = plane(Eigen::Vector3f::UnitZ(), -0.06f);
+  std::vector<ss::CandidateSegment> segments = {everything(cloud, between)};
+  const std::vector<ss::CandidateSegment> found = {everything(cloud, kAcross)};
+  EXPECT_EQ(split(segments, cloud, found), 1u);
+  ASSERT_EQ(segments.size(), 2u);
+  for (const auto& segment : segments) EXPECT_LT(ss::planeAngleDeg(segment.plane, kAcross), 1e-3f);
+}
+
+TEST(ColorSeams, BoxesOfOneDepthPushedIntoARowAreSeparateObjects) {
+  // A short box against a tall one: their front and back faces run on flush; the short box's
+  // top meets the tall box's side at a concave crease, as separate objects do.
+  const ss::Cloud cloud = boxSurfaces({Box{{-0.08f, -0.04f, 0.0f}, {0.0f, 0.04f, 0.07f}, kRed},
+                                       Box{{0.0f, -0.04f, 0.0f}, {0.08f, 0.04f, 0.12f}, kBlue}});
+  std::vector<ss::CandidateSegment> segments = {everything(cloud, plane(Eigen::Vector3f::UnitY(), 0.0f))};
+  EXPECT_EQ(split(segments, cloud), 1u);
+  ASSERT_EQ(segments.size(), 2u);
+  EXPECT_EQ(segments[0].points, pointsOfColor(cloud, kRed));
+  EXPECT_EQ(segments[1].points, pointsOfColor(cloud, kBlue));
+}
+
+TEST(ColorSeams, ALidColouredApartAtTheRimStaysWithItsBox) {
+  // The colour edge follows the box's convex top edge: one object made of two parts.
+  ss::Cloud cloud = boxSurfaces({Box{{-0.05f, -0.04f, 0.0f}, {0.05f, 0.04f, 0.12f}, kRed}});
+  for (auto& point : cloud) {
+    if (point.normal_z > 0.5f) {
+      point.r = kBlue[0];
+      point.g = kBlue[1];
+      point.b = kBlue[2];
+    }
+  }
+  ASSERT_GT(pointsOfColor(cloud, kBlue).size(), 0.1 * cloud.size());
+  std::vector<ss::CandidateSegment> segments = {everything(cloud, kAcross)};
+  EXPECT_EQ(split(segments, cloud), 0u);
+  EXPECT_EQ(segments.size(), 1u);
+}
+
+TEST(ColorSeams, ACapOnANarrowNeckStaysWithItsBottle) {
+  // The cap meets the neck flush, but its seam is a ring far narrower than the bottle.
+  ss::Cloud cloud = boxSurfaces({Box{{-0.06f, -0.06f, 0.0f}, {0.06f, 0.06f, 0.08f}, kRed},
+                                 Box{{-0.015f, -0.015f, 0.08f}, {0.015f, 0.015f, 0.12f}, kRed},
+                                 Box{{-0.015f, -0.015f, 0.12f}, {0.015f, 0.015f, 0.16f}, kBlue}});
+  const std::vector<int> cap = pointsOfColor(cloud, kBlue);
+  ASSERT_GT(cap.size(), 40u);
+  ss::ColorSeamParams params;
+  params.min_part_fraction = 0.05f;  // the cap is a candidate part; only its seam's span decides
+  params.min_part_points = 20;
+  ASSERT_GT(cap.size(), params.min_part_fraction * cloud.size());
+  std::vector<ss::CandidateSegment> segments = {everything(cloud, kAcross)};
+  EXPECT_EQ(ss::splitAtColorSeams(segments, {}, cloud, linksWithin(cloud, 0.015f), matchIn(cloud), unitScores, params),
+            0u);
+  // The same cap on a neck as wide as the bottle would be a box on a box.
+  const ss::Cloud wide = boxSurfaces({Box{{-0.015f, -0.015f, 0.0f}, {0.015f, 0.015f, 0.12f}, kRed},
+                                      Box{{-0.015f, -0.015f, 0.12f}, {0.015f, 0.015f, 0.16f}, kBlue}});
+  segments = {everything(wide, kAcross)};
+  EXPECT_EQ(ss::splitAtColorSeams(segments, {}, wide, linksWithin(wide, 0.015f), matchIn(wide), unitScores, params),
+            1u);
+}
+
+TEST(ColorSeams, APrintedObjectIsNotCutAlongItsPrint) {
+  // Speckled colours: many small regions, no large ones covering the object.
+  ss::Cloud cloud = boxSurfaces(boxOnBox(kRed));
+  std::mt19937 random(7);
+  std::uniform_int_distribution<int> channel(0, 255);
+  for (auto& point : cloud) {
+    point.r = static_cast<std::uint8_t>(channel(random));
+    point.g = static_cast<std::uint8_t>(channel(random));
+    point.b = static_cast<std::uint8_t>(channel(random));
+  }
+  std::vector<ss::CandidateSegment> segments = {everything(cloud, kAcross)};
+  EXPECT_EQ(split(segments, cloud), 0u);
+}
+
+TEST(ColorSeams, OneObjectSeenInSeparatePiecesStaysWhole) {
+  // A box's left and right ends with its middle hidden: two large regions of one colour that
+  // never meet, so no seam says they are two objects.
+  const ss::Cloud cloud = boxSurfaces({Box{{-0.12f, -0.03f, 0.0f}, {-0.04f, 0.03f, 0.1f}, kRed},
+                                       Box{{0.04f, -0.03f, 0.0f}, {0.12f, 0.03f, 0.1f}, kRed}});
+  std::vector<ss::CandidateSegment> segments = {everything(cloud, kAcross)};
+  EXPECT_EQ(split(segments, cloud), 0u);
+  EXPECT_EQ(segments.size(), 1u);
+}
