@@ -151,3 +151,22 @@ TEST(SymmetryMethod, ABoardStandingInFrontOfABoxAndTheBoxAreTwoObjects) {
   const auto whole = ss::makeSegmenter("symmetry", config)->segment(scene);
   EXPECT_LT(std::min(bestIoU(scene, whole, 1), bestIoU(scene, whole, 2)), 0.9);
 }
+
+TEST(SymmetryMethod, ABoxOnABoxOfTheSameFootprintIsTwoObjectsByTheirColours) {
+  // The stacked scene, seed 1: a box (1) under a box of the same footprint (2), their sides flush.
+  // To the shape one taller box; their colours differ (color_seams.h).
+  ss::synthetic::GeneratorOptions options;
+  options.kind = ss::synthetic::SceneKind::Stacked;
+  options.seed = 1;
+  ss::Scene scene = ss::synthetic::generateScene(options);
+  ss::SegmentationConfig config;
+  config.symmetry.filter.s_occl = 0.97f;
+  config.symmetry.filter.s_smooth = 0.05f;
+  const auto split = ss::makeSegmenter("symmetry", config)->segment(scene);
+  EXPECT_GT(bestIoU(scene, split, 1), 0.9);
+  EXPECT_GT(bestIoU(scene, split, 2), 0.9);
+
+  scene.has_color = false;  // a cloud without colour: nothing tells them apart
+  const auto colorless = ss::makeSegmenter("symmetry", config)->segment(scene);
+  EXPECT_LT(std::max(bestIoU(scene, colorless, 1), bestIoU(scene, colorless, 2)), 0.9);
+}
