@@ -18,6 +18,8 @@ struct PreprocessParams {
                                          ///< with adaptive_table_margin, the largest margin used.
   bool adaptive_table_margin = true;     ///< Margin = 3 sigma of the table points' noise (>= 5 mm),
                                          ///< so low-noise fused clouds keep the objects' bottoms.
+  bool restore_object_bottoms = true;    ///< Give segments back their sides' points within the
+                                         ///< margin (object_bottoms.h); needs input normals.
   float ransac_distance = 0.01f;         ///< RANSAC inlier distance when the plane is estimated (m).
   int ransac_iterations = 500;
   float normal_radius = 0.03f;           ///< Neighbourhood radius for normal estimation (m).

@@ -4,6 +4,7 @@
 #include <pcl/segmentation/extract_clusters.h>
 
 #include "symmetry_segmentation/baseline_segmenters.h"
+#include "symmetry_segmentation/object_bottoms.h"
 #include "symmetry_segmentation/segment_order.h"
 #include "symmetry_segmentation/stopwatch.h"
 
@@ -29,6 +30,7 @@ SegmentationResult EuclideanSegmenter::segment(const Scene& scene) const {
     segment.indices = expandToInput(prepared, cluster.indices);
     result.segments.push_back(std::move(segment));
   }
+  restoreObjectBottoms(scene, prepared, preprocessing_, result.segments);
   sortSegmentsBySize(result.segments);
   result.timing_ms.emplace_back("clustering", stage.lap());
   result.timing_ms.emplace_back("total", total.elapsedMs());

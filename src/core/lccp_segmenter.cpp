@@ -6,6 +6,7 @@
 #include <pcl/segmentation/supervoxel_clustering.h>
 
 #include "symmetry_segmentation/baseline_segmenters.h"
+#include "symmetry_segmentation/object_bottoms.h"
 #include "symmetry_segmentation/segment_order.h"
 #include "symmetry_segmentation/stopwatch.h"
 
@@ -79,6 +80,7 @@ SegmentationResult LccpSegmenter::segment(const Scene& scene) const {
     segment.indices = std::move(indices);
     result.segments.push_back(std::move(segment));
   }
+  restoreObjectBottoms(scene, prepared, preprocessing_, result.segments);
   sortSegmentsBySize(result.segments);
   result.timing_ms.emplace_back("lccp", stage.lap());
   result.timing_ms.emplace_back("total", total.elapsedMs());

@@ -36,6 +36,7 @@ const std::map<std::string, Setter>& setters() {
       {"preprocessing.remove_table", field(&C::preprocessing, &PreprocessParams::remove_table)},
       {"preprocessing.table_margin", field(&C::preprocessing, &PreprocessParams::table_margin)},
       {"preprocessing.adaptive_table_margin", field(&C::preprocessing, &PreprocessParams::adaptive_table_margin)},
+      {"preprocessing.restore_object_bottoms", field(&C::preprocessing, &PreprocessParams::restore_object_bottoms)},
       {"preprocessing.ransac_distance", field(&C::preprocessing, &PreprocessParams::ransac_distance)},
       {"preprocessing.ransac_iterations", field(&C::preprocessing, &PreprocessParams::ransac_iterations)},
       {"preprocessing.normal_radius", field(&C::preprocessing, &PreprocessParams::normal_radius)},

@@ -181,6 +181,8 @@ int objectsAtFlatSeams(const std::vector<int>& points, const std::vector<Eigen::
     seam.ends.push_back(j);
     seam.ends.push_back(k);
   });
+  std::vector<int> part_size(count, 0);
+  for (int p : part) ++part_size[p];
   DisjointSets objects(count);
   std::vector<std::pair<int, int>> flat_seams;
   for (const auto& [pair, seam] : seams) {
@@ -189,7 +191,10 @@ int objectsAtFlatSeams(const std::vector<int>& points, const std::vector<Eigen::
     // neighbour's side); convex ones are one object's own edges (a can's rim round its lid).
     const bool flat = seam.flat_links >= params.min_seam_links &&
                       seam.flat_links >= params.min_flat_seam_fraction * (seam.flat_links + seam.convex_links);
-    if (flat && seamSpansBoth(seam.ends, points, part, pair.first, pair.second, cloud, params.min_seam_span)) {
+    const int concave_links = seam.links - seam.flat_links - seam.convex_links;
+    const bool concave = concave_links >= params.min_seam_links && concave_links >= 0.5f * seam.links &&
+                         std::min(part_size[pair.first], part_size[pair.second]) >= params.min_touching_part_fraction * points.size();
+    if (concave || (flat && seamSpansBoth(seam.ends, points, part, pair.first, pair.second, cloud, params.min_seam_span))) {
       flat_seams.push_back(pair);
     } else {
       objects.unite(pair.first, pair.second);

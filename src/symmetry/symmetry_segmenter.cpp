@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "symmetry_segmentation/object_bottoms.h"
 #include "symmetry_segmentation/occupancy.h"
 #include "symmetry_segmentation/parallel_for.h"
 #include "symmetry_segmentation/preprocessing.h"
@@ -177,6 +178,7 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
     segment.scores = candidate.scores;
     result.segments.push_back(std::move(segment));
   }
+  restoreObjectBottoms(scene, prepared, preprocessing_, result.segments);
   sortSegmentsBySize(result.segments);
   result.timing_ms.emplace_back("filtering", stage.lap());
   result.timing_ms.emplace_back("total", total.elapsedMs());

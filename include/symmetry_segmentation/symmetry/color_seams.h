@@ -33,6 +33,9 @@ struct ColorSeamParams {
                                       ///< object's parts (concave links are neutral).
   int min_seam_links = 5;             ///< Regions linked by fewer links do not meet; a seam
                                       ///< with fewer flat links is not flat.
+  float min_touching_part_fraction = 0.25f;  ///< Regions meeting mostly at concave creases
+                                            ///< (a bowl on a box) are two objects when the
+                                            ///< smaller has this share (a handle has less).
   float min_seam_span = 0.7f;         ///< A seam between objects spans at least this share of
                                       ///< each one's extent along one of the seam's axes.
   float min_plane_share = 0.3f;       ///< A found segment's plane is tried on a part it covers this

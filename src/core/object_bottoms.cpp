@@ -1,0 +1,90 @@
+// Object bottoms within the table margin given back to their segments (see the header for why).
+#include "symmetry_segmentation/object_bottoms.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <pcl/kdtree/kdtree_flann.h>
+
+#include "symmetry_segmentation/point_validity.h"
+
+namespace symmetry_segmentation {
+
+std::size_t restoreObjectBottoms(const Scene& scene, const PreprocessedScene& prepared,
+                                 const PreprocessParams& preprocessing, std::vector<Segment>& segments,
+                                 const ObjectBottomParams& params) {
+  if (!preprocessing.restore_object_bottoms || !prepared.has_table || !scene.has_normals || !scene.cloud ||
+      segments.empty()) {
+    return 0;
+  }
+  const Cloud& input = *scene.cloud;
+  const Eigen::Vector3f up = prepared.table_plane.head<3>();
+  const float up_norm = up.norm();
+  if (!(up_norm > 0.0f)) return 0;
+  const float reach = params.link_distance > 0.0f ? params.link_distance : preprocessing.voxel_size;
+
+  // Dropped side points: above the table's noise floor (below the plane lies no object), within
+  // the margin, normal across the table.
+  auto height = [&](const PointT& p) { return (up.dot(p.getVector3fMap()) + prepared.table_plane[3]) / up_norm; };
+  std::vector<int> candidates;
+  for (std::size_t i = 0; i < input.size(); ++i) {
+    if (prepared.input_to_voxel[i] >= 0) continue;
+    const PointT& p = input[i];
+    if (!isUsablePoint(p) || !p.getNormalVector3fMap().allFinite()) continue;
+    const float h = height(p);
+    if (h < -prepared.table_margin || h > prepared.table_margin) continue;
+    const Eigen::Vector3f n = p.getNormalVector3fMap();
+    const float n_norm = n.norm();
+    if (!(n_norm > 0.0f) || std::fabs(n.dot(up)) >= params.max_normal_cos * n_norm * up_norm) continue;
+    candidates.push_back(static_cast<int>(i));
+  }
+  if (candidates.empty()) return 0;
+
+  // Segment points low enough to reach a candidate, each tagged with its segment.
+  auto seeds = std::make_shared<Cloud>();
+  std::vector<int> seed_segment;
+  for (std::size_t s = 0; s < segments.size(); ++s) {
+    for (int i : segments[s].indices) {
+      if (i < 0 || static_cast<std::size_t>(i) >= input.size() || height(input[i]) > prepared.table_margin + reach) continue;
+      seeds->push_back(input[i]);
+      seed_segment.push_back(static_cast<int>(s));
+    }
+  }
+  if (seeds->empty()) return 0;
+  pcl::KdTreeFLANN<PointT> seed_tree;
+  seed_tree.setInputCloud(seeds);
+  auto candidate_cloud = std::make_shared<Cloud>();
+  for (int i : candidates) candidate_cloud->push_back(input[i]);
+  pcl::KdTreeFLANN<PointT> candidate_tree;
+  candidate_tree.setInputCloud(candidate_cloud);
+
+  // Breadth first from the segments' own points, so each strip goes to the segment above it.
+  std::vector<int> owner(candidates.size(), -1);
+  std::vector<int> frontier;
+  std::vector<int> found(1);
+  std::vector<float> squared(1);
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    if (seed_tree.nearestKSearch(input[candidates[c]], 1, found, squared) > 0 && squared[0] <= reach * reach) {
+      owner[c] = seed_segment[found[0]];
+      frontier.push_back(static_cast<int>(c));
+    }
+  }
+  std::vector<int> near;
+  std::vector<float> near_squared;
+  for (std::size_t head = 0; head < frontier.size(); ++head) {
+    const int c = frontier[head];
+    candidate_tree.radiusSearch(input[candidates[c]], reach, near, near_squared);
+    for (int d : near) {
+      if (owner[d] >= 0) continue;
+      owner[d] = owner[c];
+      frontier.push_back(d);
+    }
+  }
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    if (owner[c] >= 0) segments[owner[c]].indices.push_back(candidates[c]);
+  }
+  for (Segment& segment : segments) std::sort(segment.indices.begin(), segment.indices.end());
+  return frontier.size();
+}
+
+}  // namespace symmetry_segmentation

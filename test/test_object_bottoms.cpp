@@ -1,0 +1,77 @@
+// Object bottoms within the table margin: given back to the segment above them, while the
+// table itself - facing up, or not linked to any segment - stays out.
+#include <gtest/gtest.h>
+
+#include "symmetry_segmentation/object_bottoms.h"
+#include "symmetry_segmentation/preprocessing.h"
+#include "test_clouds.h"
+
+namespace ss = symmetry_segmentation;
+
+namespace {
+
+bool onBox(const ss::PointT& p) { return p.z > 1e-4f && p.x > -1e-4f && p.x < 0.1001f && p.y > -1e-4f && p.y < 0.0801f; }
+
+struct BoxOnTable {
+  ss::Scene scene;
+  ss::PreprocessParams params;
+  BoxOnTable() {
+    scene.cloud = std::make_shared<ss::Cloud>();
+    test_clouds::addTable(*scene.cloud, 0.3f, 0.005f);
+    test_clouds::addBox(*scene.cloud, {0.0f, 0.0f, 0.0f}, {0.1f, 0.08f, 0.12f}, 0.004f);
+    scene.has_normals = true;
+    scene.table_plane = ss::PlaneCoefficients(0.0f, 0.0f, 1.0f, 0.0f);
+    params.adaptive_table_margin = false;
+    params.table_margin = 0.01f;  // the box's two lowest rows (4 and 8 mm) go with the table
+  }
+  std::vector<int> boxPoints(const ss::PreprocessedScene* kept_by = nullptr) const {
+    std::vector<int> points;
+    for (std::size_t i = 0; i < scene.cloud->size(); ++i) {
+      if (!onBox((*scene.cloud)[i])) continue;
+      if (kept_by && kept_by->input_to_voxel[i] < 0) continue;
+      points.push_back(static_cast<int>(i));
+    }
+    return points;
+  }
+};
+
+}  // namespace
+
+TEST(ObjectBottoms, TheStripWithinTheTableMarginRejoinsItsObject) {
+  const BoxOnTable box;
+  const ss::PreprocessedScene prepared = ss::preprocess(box.scene, box.params);
+  std::vector<ss::Segment> segments(1);
+  segments[0].indices = box.boxPoints(&prepared);
+  const std::size_t kept = segments[0].indices.size();
+  const std::vector<int> whole = box.boxPoints();
+  ASSERT_LT(kept, whole.size()) << "the margin must have taken some of the box";
+
+  EXPECT_EQ(ss::restoreObjectBottoms(box.scene, prepared, box.params, segments), whole.size() - kept);
+  EXPECT_EQ(segments[0].indices, whole) << "every box point and no table point";
+}
+
+TEST(ObjectBottoms, TheTableStaysOut) {
+  BoxOnTable box;
+  // Table points that face sideways (a noisy normal) but lie away from every segment.
+  for (auto& p : box.scene.cloud->points) {
+    if (p.z == 0.0f && p.x < -0.1f) {
+      p.normal_x = 1.0f;
+      p.normal_z = 0.0f;
+    }
+  }
+  const ss::PreprocessedScene prepared = ss::preprocess(box.scene, box.params);
+  std::vector<ss::Segment> segments(1);
+  segments[0].indices = box.boxPoints(&prepared);
+  ss::restoreObjectBottoms(box.scene, prepared, box.params, segments);
+  EXPECT_EQ(segments[0].indices, box.boxPoints());
+
+  // Switched off, or without the input's own normals (nothing tells sides from table): nothing
+  // is added.
+  box.params.restore_object_bottoms = false;
+  segments[0].indices = box.boxPoints(&prepared);
+  EXPECT_EQ(ss::restoreObjectBottoms(box.scene, prepared, box.params, segments), 0u);
+  box.params.restore_object_bottoms = true;
+  box.scene.has_normals = false;
+  EXPECT_EQ(ss::restoreObjectBottoms(box.scene, prepared, box.params, segments), 0u);
+  EXPECT_EQ(segments[0].indices, box.boxPoints(&prepared));
+}
