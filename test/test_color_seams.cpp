@@ -241,3 +241,30 @@ TEST(ColorSeams, OneObjectSeenInSeparatePiecesStaysWhole) {
   EXPECT_EQ(split(segments, cloud), 0u);
   EXPECT_EQ(segments.size(), 1u);
 }
+
+TEST(ColorSeams, AnObjectStandingOnAWiderOneIsItsOwnObject) {
+  // A smaller box centred on a wider one: their seam is the concave crease round its foot,
+  // which no cut could cut when one plane mirrors both onto themselves.
+  const ss::Cloud cloud = boxSurfaces({Box{{-0.06f, -0.05f, 0.0f}, {0.06f, 0.05f, 0.06f}, kRed},
+                                       Box{{-0.03f, -0.03f, 0.06f}, {0.03f, 0.03f, 0.12f}, kBlue}});
+  std::vector<ss::CandidateSegment> segments = {everything(cloud, kAcross)};
+  EXPECT_EQ(split(segments, cloud), 1u);
+  ASSERT_EQ(segments.size(), 2u);
+  EXPECT_EQ(segments[0].points, pointsOfColor(cloud, kRed));
+  EXPECT_EQ(segments[1].points, pointsOfColor(cloud, kBlue));
+}
+
+TEST(ColorSeams, ASmallPartColouredApartAtAConcaveCreaseStaysWithItsObject) {
+  // A handle-sized block on a box's side: a concave seam, but too small a part to be an object.
+  const ss::Cloud cloud = boxSurfaces({Box{{-0.06f, -0.05f, 0.0f}, {0.06f, 0.05f, 0.12f}, kRed},
+                                       Box{{0.06f, -0.02f, 0.03f}, {0.09f, 0.02f, 0.09f}, kBlue}});
+  ss::ColorSeamParams params;
+  params.min_part_points = 20;
+  params.min_part_fraction = 0.08f;
+  const std::size_t handle = pointsOfColor(cloud, kBlue).size();
+  ASSERT_GE(handle, params.min_part_fraction * cloud.size()) << "a candidate part, kept by its size alone";
+  ASSERT_LT(handle, params.min_touching_part_fraction * cloud.size());
+  std::vector<ss::CandidateSegment> segments = {everything(cloud, kAcross)};
+  EXPECT_EQ(ss::splitAtColorSeams(segments, {}, cloud, linksWithin(cloud, 0.015f), matchIn(cloud), unitScores, params),
+            0u);
+}

@@ -151,11 +151,14 @@ bool seamSpansBoth(const std::vector<int>& ends, const std::vector<int>& points,
   return false;
 }
 
-// Groups the parts into objects and renumbers `part` to 0..count-1; returns the count. Parts
-// meeting mostly at creases are one object's differently coloured parts. Only a mostly flat
-// seam says two parts are different objects; a part with no such seam to any other (the pieces
-// of one box seen either side of a board) joins the part closest to it in colour.
-int objectsAtFlatSeams(const std::vector<int>& points, const std::vector<Eigen::Vector3f>& lab, const Cloud& cloud,
+// Groups the parts into objects and renumbers `part` to 0..count-1; returns the count. Two
+// parts are different objects where their seam has a good share of concave links (where objects
+// touch: a bowl on a box, a short box's top against its taller neighbour's side) and the
+// smaller is no mere handle, or where it is mostly flat rather than convex (a convex seam is one
+// object's own edge: a can's rim round its lid) and runs right across both. Other seams join
+// one object's differently coloured parts; a part with no seam to any other (the pieces of one
+// box seen either side of a board) joins the part closest to it in colour.
+int objectsAtColorSeams(const std::vector<int>& points, const std::vector<Eigen::Vector3f>& lab, const Cloud& cloud,
                        const std::vector<std::vector<int>>& neighbours, const ColorSeamParams& params,
                        std::vector<int>& part, int count) {
   const float min_flat_cos = std::cos(params.flat_link_angle_deg * static_cast<float>(M_PI) / 180.0f);
@@ -184,24 +187,24 @@ int objectsAtFlatSeams(const std::vector<int>& points, const std::vector<Eigen::
   std::vector<int> part_size(count, 0);
   for (int p : part) ++part_size[p];
   DisjointSets objects(count);
-  std::vector<std::pair<int, int>> flat_seams;
+  std::vector<std::pair<int, int>> between_objects;
   for (const auto& [pair, seam] : seams) {
     if (seam.links < params.min_seam_links) continue;
-    // Concave links are where objects meet anyway (a short box's top against its taller
-    // neighbour's side); convex ones are one object's own edges (a can's rim round its lid).
+    const int concave_links = seam.links - seam.flat_links - seam.convex_links;
+    const bool touching = concave_links >= params.min_seam_links &&
+                          concave_links >= params.min_concave_seam_fraction * seam.links &&
+                          std::min(part_size[pair.first], part_size[pair.second]) >=
+                              params.min_touching_part_fraction * points.size();
     const bool flat = seam.flat_links >= params.min_seam_links &&
                       seam.flat_links >= params.min_flat_seam_fraction * (seam.flat_links + seam.convex_links);
-    const int concave_links = seam.links - seam.flat_links - seam.convex_links;
-    const bool concave = concave_links >= params.min_seam_links && concave_links >= 0.5f * seam.links &&
-                         std::min(part_size[pair.first], part_size[pair.second]) >= params.min_touching_part_fraction * points.size();
-    if (concave || (flat && seamSpansBoth(seam.ends, points, part, pair.first, pair.second, cloud, params.min_seam_span))) {
-      flat_seams.push_back(pair);
+    if (touching || (flat && seamSpansBoth(seam.ends, points, part, pair.first, pair.second, cloud, params.min_seam_span))) {
+      between_objects.push_back(pair);
     } else {
       objects.unite(pair.first, pair.second);
     }
   }
   std::vector<char> apart(count, 0);
-  for (const auto& [a, b] : flat_seams) {
+  for (const auto& [a, b] : between_objects) {
     if (objects.find(a) == objects.find(b)) continue;
     apart[objects.find(a)] = 1;
     apart[objects.find(b)] = 1;
@@ -278,7 +281,7 @@ std::size_t splitAtColorSeams(std::vector<CandidateSegment>& segments, const std
     for (std::size_t j = 0; j < points.size(); ++j) lab[j] = toLab(cloud[points[j]]);
     std::vector<int> part = largeColorRegions(points, lab, neighbours, params, count);
     if (part.empty()) continue;
-    count = objectsAtFlatSeams(points, lab, cloud, neighbours, params, part, count);
+    count = objectsAtColorSeams(points, lab, cloud, neighbours, params, part, count);
     if (count < 2) continue;
     std::vector<std::vector<int>> pieces(count);
     for (std::size_t j = 0; j < points.size(); ++j) pieces[part[j]].push_back(points[j]);

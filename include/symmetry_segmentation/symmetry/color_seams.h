@@ -6,10 +6,12 @@
 // the geometry they are one taller (or wider) box, and no cut or crease test can part them.
 // Their colours can. A segment whose surface falls into a few large regions of uniform colour
 // (a region: points linked through neighbours of nearly the same colour) is split into them when
-// the regions meet mostly across flat links - a colour edge running over a flat face where
-// nothing in the shape changes. Colour edges that follow the shape (a bottle's cap, a can's lid,
-// an iron's sole plate: parts of one object, made separately) run along creases and keep the
-// regions together; a printed, textured object falls into many small regions and is left alone.
+// the regions meet across flat links along a seam running right across both - a colour edge
+// over a flat face where nothing in the shape changes - or where a good share of the seam is a
+// concave crease between two sizeable regions (a bowl on a box, which the cut took together).
+// Colour edges that follow one object's convex edges (a can's lid) or ring a narrow part (a
+// bottle's cap) keep the regions together; a printed, textured object falls into many small
+// regions and is left alone.
 // Each part keeps the plane, among the segment's and those found on the part, that the part
 // contradicts least (reflections into free space or onto points outside it).
 #include <vector>
@@ -33,9 +35,9 @@ struct ColorSeamParams {
                                       ///< object's parts (concave links are neutral).
   int min_seam_links = 5;             ///< Regions linked by fewer links do not meet; a seam
                                       ///< with fewer flat links is not flat.
-  float min_touching_part_fraction = 0.25f;  ///< Regions meeting mostly at concave creases
-                                            ///< (a bowl on a box) are two objects when the
-                                            ///< smaller has this share (a handle has less).
+  float min_concave_seam_fraction = 0.3f;   ///< Regions meeting with this share of concave
+  float min_touching_part_fraction = 0.25f;  ///< links (a bowl on a box) are two objects when
+                                             ///< the smaller has this share (a handle has less).
   float min_seam_span = 0.7f;         ///< A seam between objects spans at least this share of
                                       ///< each one's extent along one of the seam's axes.
   float min_plane_share = 0.3f;       ///< A found segment's plane is tried on a part it covers this
