@@ -268,3 +268,41 @@ TEST(ColorSeams, ASmallPartColouredApartAtAConcaveCreaseStaysWithItsObject) {
   EXPECT_EQ(ss::splitAtColorSeams(segments, {}, cloud, linksWithin(cloud, 0.015f), matchIn(cloud), unitScores, params),
             0u);
 }
+
+namespace {
+
+// A red box against a blue one, the red box's segment with the blue box's top face too (the
+// strip a cut takes along the crease); the blue segment has the rest of the blue box.
+struct StrayStrip {
+  ss::Cloud cloud = boxSurfaces({Box{{-0.08f, -0.04f, 0.0f}, {0.0f, 0.04f, 0.12f}, kRed},
+                                 Box{{0.0f, -0.04f, 0.0f}, {0.08f, 0.04f, 0.07f}, kBlue}});
+  std::vector<ss::CandidateSegment> segments = std::vector<ss::CandidateSegment>(2);
+  std::vector<int> strip;
+  StrayStrip() {
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+      const bool blue_top = cloud[i].b == kBlue[2] && cloud[i].normal_z > 0.5f;
+      if (blue_top) strip.push_back(static_cast<int>(i));
+      segments[(cloud[i].r == kRed[0] || blue_top) ? 0 : 1].points.push_back(static_cast<int>(i));
+    }
+  }
+};
+
+}  // namespace
+
+TEST(ColorSeams, AStripOfTheNextObjectsColourMovesToThatObject) {
+  StrayStrip scene;
+  ASSERT_LT(scene.strip.size(), 0.3 * scene.segments[0].points.size());
+  EXPECT_EQ(ss::moveStrayColorPieces(scene.segments, scene.cloud, linksWithin(scene.cloud, 0.015f)), scene.strip.size());
+  EXPECT_EQ(scene.segments[0].points, pointsOfColor(scene.cloud, kRed));
+  EXPECT_EQ(scene.segments[1].points, pointsOfColor(scene.cloud, kBlue));
+}
+
+TEST(ColorSeams, APieceLikeNoNeighbourStays) {
+  // The strip recoloured green: print on the red box, not a piece of the blue one.
+  StrayStrip scene;
+  for (int i : scene.strip) scene.cloud[i].g = 200, scene.cloud[i].r = scene.cloud[i].b = 40;
+  const auto before = scene.segments;
+  EXPECT_EQ(ss::moveStrayColorPieces(scene.segments, scene.cloud, linksWithin(scene.cloud, 0.015f)), 0u);
+  EXPECT_EQ(scene.segments[0].points, before[0].points);
+  EXPECT_EQ(scene.segments[1].points, before[1].points);
+}

@@ -170,7 +170,14 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
     colors.flat_link_angle_deg = params_.filter.smooth_normal_angle_deg;
     split_colored = splitAtColorSeams(passing, found, cloud, graph.neighbours(), match, score, colors);
   }
-  const auto kept = removeDuplicates(std::move(passing), params_.filter);
+  auto kept = removeDuplicates(std::move(passing), params_.filter);
+  // Strips of a neighbour's colour go to that neighbour (color_seams.h).
+  std::size_t moved_colored = 0;
+  if (split_colors) {
+    ColorSeamParams colors;
+    colors.max_link_difference = params_.filter.color_seam_difference;
+    moved_colored = moveStrayColorPieces(kept, cloud, graph.neighbours(), colors);
+  }
   for (const auto& candidate : kept) {
     Segment segment;
     segment.indices = expandToInput(prepared, candidate.points);
@@ -193,6 +200,7 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
                    {"mirror_twins_split", split_twins},
                    {"composite_segments_split", split_composites},
                    {"color_seams_split", split_colored},
+                   {"color_points_moved", moved_colored},
                    {"segments_after_deduplication", result.segments.size()}};
   return result;
 }
