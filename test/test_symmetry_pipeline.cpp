@@ -111,7 +111,11 @@ TEST(SymmetryMethod, ARoundObjectCentredOnABoxIsItsOwnObject) {
   EXPECT_GT(bestIoU(scene, split, 3), 0.9);
   EXPECT_GT(bestIoU(scene, split, 4), 0.9);
 
-  config.symmetry.filter.seam_crease_angle_deg = 0.0f;  // composites kept whole
+  config.symmetry.filter.color_seam_difference = 0.0f;  // geometry alone...
+  const auto by_shape = ss::makeSegmenter("symmetry", config)->segment(scene);
+  EXPECT_GT(bestIoU(scene, by_shape, 3), 0.9);
+  EXPECT_GT(bestIoU(scene, by_shape, 4), 0.9);
+  config.symmetry.filter.seam_crease_angle_deg = 0.0f;  // ...with composites kept whole
   const auto whole = ss::makeSegmenter("symmetry", config)->segment(scene);
   EXPECT_LT(std::min(bestIoU(scene, whole, 3), bestIoU(scene, whole, 4)), 0.9)
       << "without the split the pair is one segment (else this test shows nothing)";
