@@ -11,6 +11,7 @@
 #include "symmetry_segmentation/stopwatch.h"
 #include "symmetry_segmentation/symmetry/color_seams.h"
 #include "symmetry_segmentation/symmetry/composite_segments.h"
+#include "symmetry_segmentation/symmetry/footprint_hypotheses.h"
 #include "symmetry_segmentation/symmetry/island_segments.h"
 #include "symmetry_segmentation/symmetry/mirror_twins.h"
 #include "symmetry_segmentation/symmetry/nested_segments.h"
@@ -28,6 +29,9 @@ namespace {
 // Weight of a matched reflection against one contradicted by free space when orienting a plane
 // through an axis.
 constexpr float kMatchTieBreak = 0.05f;
+// An island of which no cut took this share gets hypotheses of its own (a cut that took some of
+// it had a plane near the object's).
+constexpr float kMinIslandCoverage = 0.25f;
 
 }  // namespace
 
@@ -72,11 +76,29 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
 
   // Hypotheses are independent; results are stored by index, so any thread count gives the
   // same answer.
-  std::vector<CandidateSegment> candidates(hypotheses.size());
-  parallelFor(hypotheses.size(), params_.threads, [&](std::size_t i) {
-    candidates[i].plane = hypotheses[i].plane;
-    candidates[i].points = graph.segment(hypotheses[i].plane, hypotheses[i].anchor);
-  });
+  std::vector<CandidateSegment> candidates;
+  auto cutFrom = [&](std::size_t first) {
+    candidates.resize(hypotheses.size());
+    parallelFor(hypotheses.size() - first, params_.threads, [&](std::size_t k) {
+      const std::size_t i = first + k;
+      candidates[i].plane = hypotheses[i].plane;
+      candidates[i].points = graph.segment(hypotheses[i].plane, hypotheses[i].anchor);
+    });
+  };
+  cutFrom(0);
+  // Islands no cut covered get the planes of their footprint (footprint_hypotheses.h).
+  std::vector<std::vector<int>> islands;
+  if (params_.filter.island_gap > 0.0f) {
+    islands = spatialIslands(prepared.cloud, params_.filter.island_gap, params_.filter.min_segment_points);
+  }
+  const std::size_t first_footprint = hypotheses.size();
+  if (params_.detection.upright_hypotheses && prepared.has_table) {
+    const Eigen::Vector3f up = prepared.table_plane.head<3>().normalized();
+    for (const auto& island : groupsNoSegmentCovers(islands, candidates, kMinIslandCoverage)) {
+      for (auto& hypothesis : footprintHypotheses(cloud, island, up)) hypotheses.push_back(std::move(hypothesis));
+    }
+    cutFrom(first_footprint);
+  }
   result.timing_ms.emplace_back("graph_cut", stage.lap());
 
   std::vector<char> cut_again(candidates.size(), 0);  // per index: no shared counter between threads
@@ -106,10 +128,7 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
   // Islands one of the planes explains whole (island_segments.h), judged before the segments
   // move on.
   std::vector<CandidateSegment> island_segments;
-  if (params_.filter.island_gap > 0.0f) {
-    const auto islands = spatialIslands(prepared.cloud, params_.filter.island_gap, params_.filter.min_segment_points);
-    island_segments = explainedIslands(islands, candidates, score, params_.filter);
-  }
+  if (params_.filter.island_gap > 0.0f) island_segments = explainedIslands(islands, candidates, score, params_.filter);
   const std::size_t islands_explained = island_segments.size();
   // Planes a part split off at a colour seam may take (color_seams.h).
   const bool split_colors = scene.has_color && params_.filter.color_seam_difference > 0.0f;
@@ -193,6 +212,7 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
   result.counts = {{"working_points", cloud.size()},
                    {"curves", curves.size()},
                    {"hypotheses", hypotheses.size()},
+                   {"footprint_hypotheses", hypotheses.size() - first_footprint},
                    {"graph_cuts", hypotheses.size() + std::count(cut_again.begin(), cut_again.end(), 1)},
                    {"segments_before_filtering", non_empty},
                    {"segments_after_filtering", passed_filter},
