@@ -105,15 +105,20 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
   parallelFor(candidates.size(), params_.threads, [&](std::size_t i) {
     CandidateSegment& candidate = candidates[i];
     if (static_cast<int>(candidate.points.size()) < params_.filter.min_segment_points) return;
-    const SymmetryPlane before = candidate.plane;
+    const CandidateSegment unrefined{candidate.points, candidate.plane,
+                                     graph.scores(candidate.points, candidate.plane, params_.filter)};
     candidate.plane = refinePlane(cloud, candidate.points, candidate.plane, params_.refinement, params_.detection);
     // The same plane would give the same cut.
-    const bool moved = candidate.plane.normal != before.normal || candidate.plane.distance != before.distance;
+    const bool moved = candidate.plane.normal != unrefined.plane.normal ||
+                       candidate.plane.distance != unrefined.plane.distance;
     if (params_.refinement.enabled && moved) {
       candidate.points = graph.segment(candidate.plane, hypotheses[i].anchor);
       cut_again[i] = 1;
     }
     candidate.scores = graph.scores(candidate.points, candidate.plane, params_.filter);
+    // ICP pulls a plane toward the better-seen side of an object seen mostly from one side; a
+    // refinement that loses an object the first cut had found is undone.
+    if (passesFilter(unrefined, params_.filter) && !passesFilter(candidate, params_.filter)) candidate = unrefined;
   });
   result.timing_ms.emplace_back("refinement", stage.lap());
 
