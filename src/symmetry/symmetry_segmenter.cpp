@@ -29,9 +29,8 @@ namespace {
 // Weight of a matched reflection against one contradicted by free space when orienting a plane
 // through an axis.
 constexpr float kMatchTieBreak = 0.05f;
-// An island of which no cut took this share gets hypotheses of its own (a cut that took some of
-// it had a plane near the object's).
-constexpr float kMinIslandCoverage = 0.25f;
+// An island of which no passing segment covers this share gets hypotheses of its own.
+constexpr float kMinIslandCoverage = 0.9f;
 
 }  // namespace
 
@@ -77,6 +76,7 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
   // Hypotheses are independent; results are stored by index, so any thread count gives the
   // same answer.
   std::vector<CandidateSegment> candidates;
+  std::vector<char> cut_again;  // per index: no shared counter between threads
   auto cutFrom = [&](std::size_t first) {
     candidates.resize(hypotheses.size());
     parallelFor(hypotheses.size() - first, params_.threads, [&](std::size_t k) {
@@ -85,42 +85,47 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
       candidates[i].points = graph.segment(hypotheses[i].plane, hypotheses[i].anchor);
     });
   };
+  auto refineFrom = [&](std::size_t first) {
+    cut_again.resize(candidates.size(), 0);
+    parallelFor(candidates.size() - first, params_.threads, [&](std::size_t k) {
+      const std::size_t i = first + k;
+      CandidateSegment& candidate = candidates[i];
+      if (static_cast<int>(candidate.points.size()) < params_.filter.min_segment_points) return;
+      const SymmetryPlane before = candidate.plane;
+      candidate.plane = refinePlane(cloud, candidate.points, candidate.plane, params_.refinement, params_.detection);
+      // The same plane would give the same cut.
+      const bool moved = candidate.plane.normal != before.normal || candidate.plane.distance != before.distance;
+      if (params_.refinement.enabled && moved) {
+        candidate.points = graph.segment(candidate.plane, hypotheses[i].anchor);
+        cut_again[i] = 1;
+      }
+      candidate.scores = graph.scores(candidate.points, candidate.plane, params_.filter);
+    });
+  };
   cutFrom(0);
-  // Islands no cut covered get the planes of their footprint (footprint_hypotheses.h).
+  result.timing_ms.emplace_back("graph_cut", stage.lap());
+  refineFrom(0);
+  result.timing_ms.emplace_back("refinement", stage.lap());
+
+  // Islands no passing segment covers get the planes of their footprint (footprint_hypotheses.h).
   std::vector<std::vector<int>> islands;
   if (params_.filter.island_gap > 0.0f) {
     islands = spatialIslands(prepared.cloud, params_.filter.island_gap, params_.filter.min_segment_points);
   }
   const std::size_t first_footprint = hypotheses.size();
   if (params_.detection.upright_hypotheses && prepared.has_table) {
+    std::vector<CandidateSegment> passing_so_far;
+    for (const CandidateSegment& candidate : candidates) {
+      if (passesFilter(candidate, params_.filter)) passing_so_far.push_back(candidate);
+    }
     const Eigen::Vector3f up = prepared.table_plane.head<3>().normalized();
-    for (const auto& island : groupsNoSegmentCovers(islands, candidates, kMinIslandCoverage)) {
+    for (const auto& island : groupsNoSegmentCovers(islands, passing_so_far, kMinIslandCoverage)) {
       for (auto& hypothesis : footprintHypotheses(cloud, island, up)) hypotheses.push_back(std::move(hypothesis));
     }
     cutFrom(first_footprint);
+    refineFrom(first_footprint);
   }
-  result.timing_ms.emplace_back("graph_cut", stage.lap());
-
-  std::vector<char> cut_again(candidates.size(), 0);  // per index: no shared counter between threads
-  parallelFor(candidates.size(), params_.threads, [&](std::size_t i) {
-    CandidateSegment& candidate = candidates[i];
-    if (static_cast<int>(candidate.points.size()) < params_.filter.min_segment_points) return;
-    const CandidateSegment unrefined{candidate.points, candidate.plane,
-                                     graph.scores(candidate.points, candidate.plane, params_.filter)};
-    candidate.plane = refinePlane(cloud, candidate.points, candidate.plane, params_.refinement, params_.detection);
-    // The same plane would give the same cut.
-    const bool moved = candidate.plane.normal != unrefined.plane.normal ||
-                       candidate.plane.distance != unrefined.plane.distance;
-    if (params_.refinement.enabled && moved) {
-      candidate.points = graph.segment(candidate.plane, hypotheses[i].anchor);
-      cut_again[i] = 1;
-    }
-    candidate.scores = graph.scores(candidate.points, candidate.plane, params_.filter);
-    // ICP pulls a plane toward the better-seen side of an object seen mostly from one side; a
-    // refinement that loses an object the first cut had found is undone.
-    if (passesFilter(unrefined, params_.filter) && !passesFilter(candidate, params_.filter)) candidate = unrefined;
-  });
-  result.timing_ms.emplace_back("refinement", stage.lap());
+  result.timing_ms.emplace_back("footprints", stage.lap());
 
   // Scores and reflection matches the filtering stages share.
   const SegmentScorer score = [&graph, this](const std::vector<int>& points, const SymmetryPlane& plane) {

@@ -3,8 +3,9 @@
 //
 // Curve pairs and single surfaces propose the planes of most objects; an object seen from one
 // side only, with few normal edges and no surface of revolution, can get none that its cut
-// takes, and is then missed outright. When it stands apart (an island of points, see
-// island_segments.h) that no cut covered, the gravity prior still gives two good guesses: the
+// takes, and is then missed outright; an L-shaped block whose face planes came out a few degrees
+// off is found in pieces. When it stands apart (an island of points, see island_segments.h) and
+// no segment passing the filter covers it, the gravity prior still gives two good guesses: the
 // vertical planes through the middle of its footprint along the footprint's principal axes (a
 // box, an L or U shape, a mug seen from its handle's side). The cut, refinement and filter judge
 // them as any other hypothesis.
