@@ -1,6 +1,7 @@
-// Stage 5d: a segment of flush objects is split where its colour changes over a flat face
-// running across both; colour edges on one object (a lid at the rim, a cap on a neck, print)
-// and an object seen in separate pieces leave it whole.
+// Stages 5d and 5e: a segment of flush objects is split where its colour changes over a flat
+// face running across both; colour edges on one object (a lid at the rim, a cap on a neck,
+// print) and an object seen in separate pieces leave it whole. A strip of a neighbour's colour
+// moves to the neighbour.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -8,6 +9,7 @@
 #include <random>
 
 #include "symmetry_segmentation/symmetry/color_seams.h"
+#include "symmetry_segmentation/symmetry/stray_color_pieces.h"
 #include "symmetry_segmentation/symmetry/symmetry_plane.h"
 
 namespace ss = symmetry_segmentation;

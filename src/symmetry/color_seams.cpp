@@ -4,53 +4,19 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <iterator>
 #include <map>
 #include <utility>
 
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 
+#include "color_lab.h"
 #include "disjoint_sets.h"
 #include "symmetry_segmentation/symmetry/smoothness_weight.h"
 #include "symmetry_segmentation/symmetry/sorted_indices.h"
 
 namespace symmetry_segmentation {
 namespace {
-
-// sRGB (0-255) to CIELAB (D65 white), the space in which equal distances look about equally
-// different.
-Eigen::Vector3f toLab(const PointT& point) {
-  auto linear = [](std::uint8_t channel) {
-    const float c = channel / 255.0f;
-    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-  };
-  const float r = linear(point.r), g = linear(point.g), b = linear(point.b);
-  const float x = (0.4124f * r + 0.3576f * g + 0.1805f * b) / 0.95047f;
-  const float y = 0.2126f * r + 0.7152f * g + 0.0722f * b;
-  const float z = (0.0193f * r + 0.1192f * g + 0.9505f * b) / 1.08883f;
-  auto f = [](float t) { return t > 0.008856f ? std::cbrt(t) : 7.787f * t + 16.0f / 116.0f; };
-  return {116.0f * f(y) - 16.0f, 500.0f * (f(x) - f(y)), 200.0f * (f(y) - f(z))};
-}
-
-float colorDifference(const Eigen::Vector3f& lab_a, const Eigen::Vector3f& lab_b) {
-  const Eigen::Vector3f d = lab_a - lab_b;
-  return std::sqrt(0.25f * d.x() * d.x() + d.y() * d.y() + d.z() * d.z());
-}
-
-// Calls visit(j, k) once for every link between segment positions j < k.
-template <typename Visit>
-void forEachLink(const std::vector<int>& points, const std::vector<std::vector<int>>& neighbours, Visit visit) {
-  for (std::size_t j = 0; j < points.size(); ++j) {
-    const int p = points[j];
-    if (p < 0 || static_cast<std::size_t>(p) >= neighbours.size()) continue;
-    for (int q : neighbours[p]) {
-      if (q <= p) continue;
-      const int k = positionIn(points, q);
-      if (k >= 0) visit(static_cast<int>(j), k);
-    }
-  }
-}
 
 // Part per segment position: the large uniform-colour regions, each grown over the segment's
 // links into the small regions around it (print, blended colours at the seam). Empty unless
@@ -308,106 +274,6 @@ std::size_t splitAtColorSeams(std::vector<CandidateSegment>& segments, const std
     }
   }
   return split;
-}
-
-namespace {
-
-struct ColorRegions {
-  std::vector<int> region;                 // per segment position
-  std::vector<std::vector<int>> members;   // positions per region
-  std::vector<Eigen::Vector3f> mean;       // Lab per region
-  int dominant = -1;
-};
-
-ColorRegions colorRegionsOf(const std::vector<int>& points, const Cloud& cloud,
-                            const std::vector<std::vector<int>>& neighbours, float max_difference) {
-  std::vector<Eigen::Vector3f> lab(points.size());
-  for (std::size_t j = 0; j < points.size(); ++j) lab[j] = toLab(cloud[points[j]]);
-  DisjointSets sets(points.size());
-  forEachLink(points, neighbours, [&](int j, int k) {
-    if (colorDifference(lab[j], lab[k]) <= max_difference) sets.unite(j, k);
-  });
-  ColorRegions result;
-  result.region.resize(points.size());
-  std::map<int, int> index_of_root;
-  for (std::size_t j = 0; j < points.size(); ++j) {
-    const int root = sets.find(static_cast<int>(j));
-    const auto it = index_of_root.emplace(root, static_cast<int>(index_of_root.size())).first;
-    if (it->second == static_cast<int>(result.members.size())) {
-      result.members.emplace_back();
-      result.mean.push_back(Eigen::Vector3f::Zero());
-    }
-    result.region[j] = it->second;
-    result.members[it->second].push_back(static_cast<int>(j));
-    result.mean[it->second] += lab[j];
-  }
-  for (std::size_t r = 0; r < result.members.size(); ++r) {
-    result.mean[r] /= static_cast<float>(result.members[r].size());
-    if (result.dominant < 0 || result.members[r].size() > result.members[result.dominant].size()) {
-      result.dominant = static_cast<int>(r);
-    }
-  }
-  return result;
-}
-
-}  // namespace
-
-std::size_t moveStrayColorPieces(std::vector<CandidateSegment>& segments, const Cloud& cloud,
-                                 const std::vector<std::vector<int>>& neighbours, const ColorSeamParams& params) {
-  constexpr float kMinDominantShare = 0.7f;
-  constexpr float kMaxStrayShare = 0.3f;
-  std::vector<ColorRegions> regions;
-  std::vector<int> owner(cloud.size(), -1);
-  for (std::size_t s = 0; s < segments.size(); ++s) {
-    regions.push_back(colorRegionsOf(segments[s].points, cloud, neighbours, params.max_link_difference));
-    for (int p : segments[s].points) {
-      if (owner[p] < 0) owner[p] = static_cast<int>(s);
-    }
-  }
-  auto uniform = [&](std::size_t s) {
-    const ColorRegions& r = regions[s];
-    return r.dominant >= 0 && r.members[r.dominant].size() >= kMinDominantShare * segments[s].points.size();
-  };
-  std::vector<std::vector<int>> leaving(segments.size()), arriving(segments.size());
-  for (std::size_t s = 0; s < segments.size(); ++s) {
-    if (!uniform(s)) continue;
-    const ColorRegions& r = regions[s];
-    const std::vector<int>& points = segments[s].points;
-    for (std::size_t g = 0; g < r.members.size(); ++g) {
-      if (static_cast<int>(g) == r.dominant || r.members[g].size() > kMaxStrayShare * points.size()) continue;
-      if (colorDifference(r.mean[g], r.mean[r.dominant]) <= params.max_link_difference) continue;
-      std::map<int, int> links;  // adjacent segment -> links
-      for (int j : r.members[g]) {
-        for (int q : neighbours[points[j]]) {
-          const int t = owner[q];
-          if (t >= 0 && t != static_cast<int>(s)) ++links[t];
-        }
-      }
-      int target = -1, most = 0;
-      for (const auto& [t, n] : links) {
-        if (n <= most || !uniform(t)) continue;
-        if (colorDifference(r.mean[g], regions[t].mean[regions[t].dominant]) > params.max_link_difference) continue;
-        most = n;
-        target = t;
-      }
-      if (target < 0) continue;
-      for (int j : r.members[g]) {
-        leaving[s].push_back(points[j]);
-        arriving[target].push_back(points[j]);
-      }
-    }
-  }
-  std::size_t moved = 0;
-  for (std::size_t s = 0; s < segments.size(); ++s) {
-    std::sort(leaving[s].begin(), leaving[s].end());
-    std::sort(arriving[s].begin(), arriving[s].end());
-    moved += arriving[s].size();
-    std::vector<int> kept = difference(segments[s].points, leaving[s]);
-    std::vector<int> merged;
-    std::set_union(kept.begin(), kept.end(), arriving[s].begin(), arriving[s].end(), std::back_inserter(merged));
-    segments[s].points = std::move(merged);
-  }
-  return moved;
 }
 
 }  // namespace symmetry_segmentation

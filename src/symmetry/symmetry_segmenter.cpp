@@ -18,6 +18,7 @@
 #include "symmetry_segmentation/symmetry/normal_edge_curves.h"
 #include "symmetry_segmentation/symmetry/plane_refinement.h"
 #include "symmetry_segmentation/symmetry/segment_filter.h"
+#include "symmetry_segmentation/symmetry/stray_color_pieces.h"
 #include "symmetry_segmentation/symmetry/smoothness_weight.h"
 #include "symmetry_segmentation/symmetry/symmetric_graph_cut.h"
 #include "symmetry_segmentation/symmetry/symmetry_hypotheses.h"
@@ -200,12 +201,10 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
     split_colored = splitAtColorSeams(passing, found, cloud, graph.neighbours(), match, score, colors);
   }
   auto kept = removeDuplicates(std::move(passing), params_.filter);
-  // Strips of a neighbour's colour go to that neighbour (color_seams.h).
+  // Strips of a neighbour's colour go to that neighbour (stray_color_pieces.h).
   std::size_t moved_colored = 0;
   if (split_colors) {
-    ColorSeamParams colors;
-    colors.max_link_difference = params_.filter.color_seam_difference;
-    moved_colored = moveStrayColorPieces(kept, cloud, graph.neighbours(), colors);
+    moved_colored = moveStrayColorPieces(kept, cloud, graph.neighbours(), params_.filter.color_seam_difference);
   }
   for (const auto& candidate : kept) {
     Segment segment;

@@ -14,8 +14,6 @@
 // regions and is left alone.
 // Each part keeps the plane, among the segment's and those found on the part, that the part
 // contradicts least (reflections into free space or onto points outside it).
-// After deduplication, a small region whose colour is unlike the rest of its segment but like an
-// adjacent segment's (a strip of the next box the cut took along the crease) moves to that one.
 #include <vector>
 
 #include "symmetry_segmentation/scene.h"
@@ -54,12 +52,5 @@ std::size_t splitAtColorSeams(std::vector<CandidateSegment>& segments, const std
                               const Cloud& cloud, const std::vector<std::vector<int>>& neighbours,
                               const ReflectionMatch& match, const SegmentScorer& score,
                               const ColorSeamParams& params = {});
-
-/// Moves each small region of `segments` whose colour is unlike the rest of its segment and like
-/// the colour of an adjacent segment (both mostly one colour) over to that segment: a strip of
-/// the next box that a cut took along a crease. `segments` are final (after deduplication);
-/// returns how many points moved.
-std::size_t moveStrayColorPieces(std::vector<CandidateSegment>& segments, const Cloud& cloud,
-                                 const std::vector<std::vector<int>>& neighbours, const ColorSeamParams& params = {});
 
 }  // namespace symmetry_segmentation
