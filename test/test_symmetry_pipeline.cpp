@@ -92,6 +92,21 @@ double bestIoU(const ss::Scene& scene, const ss::SegmentationResult& result, int
   return best;
 }
 
+ss::Scene generated(ss::synthetic::SceneKind kind, int seed) {
+  ss::synthetic::GeneratorOptions options;
+  options.kind = kind;
+  options.seed = seed;
+  return ss::synthetic::generateScene(options);
+}
+
+// The high_recall preset.
+ss::SegmentationConfig highRecall() {
+  ss::SegmentationConfig config;
+  config.symmetry.filter.s_occl = 0.97f;
+  config.symmetry.filter.s_smooth = 0.05f;
+  return config;
+}
+
 }  // namespace
 
 TEST(SymmetryMethod, ARoundObjectCentredOnABoxIsItsOwnObject) {
@@ -99,14 +114,8 @@ TEST(SymmetryMethod, ARoundObjectCentredOnABoxIsItsOwnObject) {
   // a wider box (3). Every plane through the round object's axis and the box's centre is a
   // symmetry of both; each is also found alone, and they meet at a concave seam
   // (composite_segments.h).
-  ss::synthetic::GeneratorOptions options;
-  options.kind = ss::synthetic::SceneKind::Stacked;
-  options.seed = 2;
-  const ss::Scene scene = ss::synthetic::generateScene(options);
-
-  ss::SegmentationConfig config;
-  config.symmetry.filter.s_occl = 0.97f;  // the high_recall preset
-  config.symmetry.filter.s_smooth = 0.05f;
+  const ss::Scene scene = generated(ss::synthetic::SceneKind::Stacked, 2);
+  ss::SegmentationConfig config = highRecall();
   const auto split = ss::makeSegmenter("symmetry", config)->segment(scene);
   EXPECT_GT(bestIoU(scene, split, 3), 0.9);
   EXPECT_GT(bestIoU(scene, split, 4), 0.9);
@@ -125,13 +134,8 @@ TEST(SymmetryMethod, TwoTouchingRoundObjectsAreFoundEach) {
   // The touching scene, seed 2: a bottle or can (6) and a cone (7) standing side by side. Their
   // sides merge into one surface where they touch; each axis must still propose its own plane,
   // and its cut keep its own object rather than the larger neighbour.
-  ss::synthetic::GeneratorOptions options;
-  options.kind = ss::synthetic::SceneKind::Touching;
-  options.seed = 2;
-  const ss::Scene scene = ss::synthetic::generateScene(options);
-  ss::SegmentationConfig config;
-  config.symmetry.filter.s_occl = 0.97f;
-  config.symmetry.filter.s_smooth = 0.05f;
+  const ss::Scene scene = generated(ss::synthetic::SceneKind::Touching, 2);
+  const ss::SegmentationConfig config = highRecall();
   const auto result = ss::makeSegmenter("symmetry", config)->segment(scene);
   EXPECT_GT(bestIoU(scene, result, 6), 0.9);
   EXPECT_GT(bestIoU(scene, result, 7), 0.9);
@@ -141,13 +145,8 @@ TEST(SymmetryMethod, ABoardStandingInFrontOfABoxAndTheBoxAreTwoObjects) {
   // The occluded scene: a long box (1) and a board (2) standing just in front of its middle.
   // The plane through both centres is a symmetry of both; the board is found alone, the box,
   // seen in pieces around it, is not - it is the rest of their union (composite_segments.h).
-  ss::synthetic::GeneratorOptions options;
-  options.kind = ss::synthetic::SceneKind::Occluded;
-  options.seed = 1;
-  const ss::Scene scene = ss::synthetic::generateScene(options);
-  ss::SegmentationConfig config;
-  config.symmetry.filter.s_occl = 0.97f;
-  config.symmetry.filter.s_smooth = 0.05f;
+  const ss::Scene scene = generated(ss::synthetic::SceneKind::Occluded, 1);
+  ss::SegmentationConfig config = highRecall();
   const auto split = ss::makeSegmenter("symmetry", config)->segment(scene);
   EXPECT_GT(bestIoU(scene, split, 1), 0.9);
   EXPECT_GT(bestIoU(scene, split, 2), 0.9);
@@ -159,13 +158,8 @@ TEST(SymmetryMethod, ABoardStandingInFrontOfABoxAndTheBoxAreTwoObjects) {
 TEST(SymmetryMethod, ABoxOnABoxOfTheSameFootprintIsTwoObjectsByTheirColours) {
   // The stacked scene, seed 1: a box (1) under a box of the same footprint (2), their sides flush.
   // To the shape one taller box; their colours differ (color_seams.h).
-  ss::synthetic::GeneratorOptions options;
-  options.kind = ss::synthetic::SceneKind::Stacked;
-  options.seed = 1;
-  ss::Scene scene = ss::synthetic::generateScene(options);
-  ss::SegmentationConfig config;
-  config.symmetry.filter.s_occl = 0.97f;
-  config.symmetry.filter.s_smooth = 0.05f;
+  ss::Scene scene = generated(ss::synthetic::SceneKind::Stacked, 1);
+  const ss::SegmentationConfig config = highRecall();
   const auto split = ss::makeSegmenter("symmetry", config)->segment(scene);
   EXPECT_GT(bestIoU(scene, split, 1), 0.9);
   EXPECT_GT(bestIoU(scene, split, 2), 0.9);
