@@ -89,31 +89,26 @@ bool seamSpansBoth(const std::vector<int>& ends, const std::vector<int>& points,
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3f> axes(scatter);
   const Eigen::Vector3f first = axes.eigenvectors().col(2);
   const Eigen::Vector3f second = axes.eigenvectors().col(1);
-  constexpr int kDirections = 12;
-  for (int step = 0; step < kDirections; ++step) {
-    const float angle = static_cast<float>(M_PI) * step / kDirections;
-    const Eigen::Vector3f direction = std::cos(angle) * first + std::sin(angle) * second;
-    auto extent = [&](auto keep) {
-      float low = std::numeric_limits<float>::max(), high = std::numeric_limits<float>::lowest();
-      for (std::size_t j = 0; j < points.size(); ++j) {
-        if (!keep(static_cast<int>(j))) continue;
-        const float t = direction.dot(cloud[points[j]].getVector3fMap());
-        low = std::min(low, t);
-        high = std::max(high, t);
-      }
-      return high > low ? high - low : 0.0f;
-    };
+  std::vector<int> of_a, of_b;
+  for (std::size_t j = 0; j < points.size(); ++j) {
+    if (part[j] == a) of_a.push_back(static_cast<int>(j));
+    if (part[j] == b) of_b.push_back(static_cast<int>(j));
+  }
+  auto extent = [&](const std::vector<int>& positions, const Eigen::Vector3f& direction) {
     float low = std::numeric_limits<float>::max(), high = std::numeric_limits<float>::lowest();
-    for (int j : ends) {
+    for (int j : positions) {
       const float t = direction.dot(cloud[points[j]].getVector3fMap());
       low = std::min(low, t);
       high = std::max(high, t);
     }
-    const float seam = high - low;
-    if (seam >= min_span * extent([&](int j) { return part[j] == a; }) &&
-        seam >= min_span * extent([&](int j) { return part[j] == b; })) {
-      return true;
-    }
+    return high > low ? high - low : 0.0f;
+  };
+  constexpr int kDirections = 12;
+  for (int step = 0; step < kDirections; ++step) {
+    const float angle = static_cast<float>(M_PI) * step / kDirections;
+    const Eigen::Vector3f direction = std::cos(angle) * first + std::sin(angle) * second;
+    const float seam = extent(ends, direction);
+    if (seam >= min_span * extent(of_a, direction) && seam >= min_span * extent(of_b, direction)) return true;
   }
   return false;
 }

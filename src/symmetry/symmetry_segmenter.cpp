@@ -141,15 +141,12 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
   std::vector<CandidateSegment> island_segments;
   if (params_.filter.island_gap > 0.0f) island_segments = explainedIslands(islands, candidates, score, params_.filter);
   const std::size_t islands_explained = island_segments.size();
-  // Planes a part split off at a colour seam may take (color_seams.h).
-  const bool split_colors = scene.has_color && params_.filter.color_seam_difference > 0.0f;
-  std::vector<CandidateSegment> found;
-  if (split_colors) found = candidates;
+  // The candidates stay as they are: a part split off at a colour seam may take one's plane.
   std::vector<CandidateSegment> passing;
   std::size_t non_empty = 0;
-  for (auto& candidate : candidates) {
+  for (const auto& candidate : candidates) {
     if (static_cast<int>(candidate.points.size()) >= params_.filter.min_segment_points) ++non_empty;
-    if (passesFilter(candidate, params_.filter)) passing.push_back(std::move(candidate));
+    if (passesFilter(candidate, params_.filter)) passing.push_back(candidate);
   }
   for (CandidateSegment& island : island_segments) passing.push_back(std::move(island));
   const std::size_t passed_filter = passing.size();
@@ -192,13 +189,14 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
                                [](const CandidateSegment& c) { return c.points.empty(); }),
                 passing.end());
   // Flush objects of different colours (color_seams.h).
+  const bool split_colors = scene.has_color && params_.filter.color_seam_difference > 0.0f;
   std::size_t split_colored = 0;
   if (split_colors) {
     ColorSeamParams colors;
     colors.max_link_difference = params_.filter.color_seam_difference;
     colors.min_part_points = params_.filter.min_segment_points;
     colors.flat_link_angle_deg = params_.filter.smooth_normal_angle_deg;
-    split_colored = splitAtColorSeams(passing, found, cloud, graph.neighbours(), match, score, colors);
+    split_colored = splitAtColorSeams(passing, candidates, cloud, graph.neighbours(), match, score, colors);
   }
   auto kept = removeDuplicates(std::move(passing), params_.filter);
   // Strips of a neighbour's colour go to that neighbour (stray_color_pieces.h).
