@@ -40,10 +40,9 @@ std::vector<SymmetryHypothesis> footprintHypotheses(const Cloud& cloud, const st
       high = std::max(high, axis.dot(q));
     }
     if (high - low > max_extent) return {};  // several objects standing together, not one
+    const Eigen::Vector3f normal = axis.x() * u + axis.y() * v;
     SymmetryHypothesis hypothesis;
-    hypothesis.plane.normal = (axis.x() * u + axis.y() * v).normalized();
-    hypothesis.plane.distance = -0.5f * (low + high);
-    hypothesis.plane = canonicalPlane(hypothesis.plane);
+    hypothesis.plane = verticalPlaneThrough(0.5f * (low + high) * normal, normal, up);
     hypothesis.support = static_cast<int>(group.size());
     hypothesis.anchor = group;
     result.push_back(std::move(hypothesis));

@@ -28,13 +28,10 @@ struct Surface {
   std::vector<int> points;
 };
 
-SymmetryHypothesis verticalPlane(const Eigen::Vector3f& through, Eigen::Vector3f normal, const Eigen::Vector3f& up,
-                                 int support) {
-  normal -= normal.dot(up) * up;  // Exactly vertical plane.
+SymmetryHypothesis verticalPlane(const Eigen::Vector3f& through, const Eigen::Vector3f& normal,
+                                 const Eigen::Vector3f& up, int support) {
   SymmetryHypothesis h;
-  h.plane.normal = normal.normalized();
-  h.plane.distance = -h.plane.normal.dot(through);
-  h.plane = canonicalPlane(h.plane);
+  h.plane = verticalPlaneThrough(through, normal, up);
   h.support = support;
   return h;
 }

@@ -43,6 +43,17 @@ inline SymmetryPlane canonicalPlane(SymmetryPlane plane) {
   return plane;
 }
 
+/// The vertical plane (for the unit normal `up` of the table) through `point` whose normal is
+/// `direction` made horizontal, with the canonical sign. Requires `direction` not parallel to `up`.
+inline SymmetryPlane verticalPlaneThrough(const Eigen::Vector3f& point, Eigen::Vector3f direction,
+                                          const Eigen::Vector3f& up) {
+  direction -= direction.dot(up) * up;
+  SymmetryPlane plane;
+  plane.normal = direction.normalized();
+  plane.distance = -plane.normal.dot(point);
+  return canonicalPlane(plane);
+}
+
 /// Angle between two planes' normals in degrees, ignoring orientation (0..90).
 inline float planeAngleDeg(const SymmetryPlane& a, const SymmetryPlane& b) {
   const float c = std::min(1.0f, std::fabs(a.normal.dot(b.normal)));
