@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include "disjoint_sets.h"
 #include "symmetry_segmentation/scene.h"
 #include "symmetry_segmentation/symmetry/sorted_indices.h"
 
@@ -44,6 +45,17 @@ void forEachLink(const std::vector<int>& points, const std::vector<std::vector<i
       if (k >= 0) visit(static_cast<int>(j), k);
     }
   }
+}
+
+// Colour regions of `points`: positions joined through links whose ends differ in colour (`lab`,
+// per position) by at most `max_difference`.
+inline DisjointSets colorRegions(const std::vector<int>& points, const std::vector<Eigen::Vector3f>& lab,
+                                 const std::vector<std::vector<int>>& neighbours, float max_difference) {
+  DisjointSets regions(points.size());
+  forEachLink(points, neighbours, [&](int j, int k) {
+    if (colorDifference(lab[j], lab[k]) <= max_difference) regions.unite(j, k);
+  });
+  return regions;
 }
 
 }  // namespace symmetry_segmentation

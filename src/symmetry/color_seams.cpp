@@ -24,10 +24,7 @@ namespace {
 std::vector<int> largeColorRegions(const std::vector<int>& points, const std::vector<Eigen::Vector3f>& lab,
                                    const std::vector<std::vector<int>>& neighbours, const ColorSeamParams& params,
                                    int& count) {
-  DisjointSets regions(points.size());
-  forEachLink(points, neighbours, [&](int j, int k) {
-    if (colorDifference(lab[j], lab[k]) <= params.max_link_difference) regions.unite(j, k);
-  });
+  DisjointSets regions = colorRegions(points, lab, neighbours, params.max_link_difference);
   std::map<int, int> sizes;
   for (std::size_t j = 0; j < points.size(); ++j) ++sizes[regions.find(static_cast<int>(j))];
   const double min_size = std::max<double>(params.min_part_points, params.min_part_fraction * points.size());

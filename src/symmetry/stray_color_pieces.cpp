@@ -13,7 +13,6 @@ namespace symmetry_segmentation {
 namespace {
 
 struct ColorRegions {
-  std::vector<int> region;                 // per segment position
   std::vector<std::vector<int>> members;   // positions per region
   std::vector<Eigen::Vector3f> mean;       // Lab per region
   int dominant = -1;
@@ -23,12 +22,8 @@ ColorRegions colorRegionsOf(const std::vector<int>& points, const Cloud& cloud,
                             const std::vector<std::vector<int>>& neighbours, float max_difference) {
   std::vector<Eigen::Vector3f> lab(points.size());
   for (std::size_t j = 0; j < points.size(); ++j) lab[j] = toLab(cloud[points[j]]);
-  DisjointSets sets(points.size());
-  forEachLink(points, neighbours, [&](int j, int k) {
-    if (colorDifference(lab[j], lab[k]) <= max_difference) sets.unite(j, k);
-  });
+  DisjointSets sets = colorRegions(points, lab, neighbours, max_difference);
   ColorRegions result;
-  result.region.resize(points.size());
   std::map<int, int> index_of_root;
   for (std::size_t j = 0; j < points.size(); ++j) {
     const int root = sets.find(static_cast<int>(j));
@@ -37,7 +32,6 @@ ColorRegions colorRegionsOf(const std::vector<int>& points, const Cloud& cloud,
       result.members.emplace_back();
       result.mean.push_back(Eigen::Vector3f::Zero());
     }
-    result.region[j] = it->second;
     result.members[it->second].push_back(static_cast<int>(j));
     result.mean[it->second] += lab[j];
   }
