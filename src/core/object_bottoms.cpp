@@ -23,8 +23,8 @@ std::size_t restoreObjectBottoms(const Scene& scene, const PreprocessedScene& pr
   if (!(up_norm > 0.0f)) return 0;
   const float reach = params.link_distance > 0.0f ? params.link_distance : preprocessing.voxel_size;
 
-  // Dropped side points: above the table's noise floor (below the plane lies no object), within
-  // the margin, normal across the table.
+  // Dropped side points: within the margin of the plane on either side (the table's noise spreads
+  // both ways), normal across the table.
   auto height = [&](const PointT& p) { return (up.dot(p.getVector3fMap()) + prepared.table_plane[3]) / up_norm; };
   std::vector<int> candidates;
   for (std::size_t i = 0; i < input.size(); ++i) {
