@@ -1,7 +1,10 @@
 #include <gtest/gtest.h>
+
+#include <set>
 #include <yaml-cpp/yaml.h>
 
 #include "symmetry_segmentation/errors.h"
+#include "symmetry_segmentation/parameter_schema.h"
 #include "symmetry_segmentation/segmentation_config.h"
 #include "symmetry_segmentation/segments_json.h"
 #include "test_support.h"
@@ -49,6 +52,65 @@ TEST(Config, OverridesAndRejectsTypos) {
   EXPECT_THROW(ss::setConfigValue(config, "preprocessing.voxel_size", "-1"), ss::InputError);
   EXPECT_THROW(ss::setConfigValue(config, "nosection", "1"), ss::InputError);
   EXPECT_THROW(ss::loadConfigFile("/nonexistent/config.yaml"), ss::InputError);
+}
+
+TEST(ParameterSchema, GeneratedFilesAreCurrent) {
+  // config/default.yaml and cfg/live_parameters.yaml are written from the schema
+  // (segment_scene --print-config / --print-live-parameters): a stale copy misdocuments.
+  EXPECT_EQ(test_support::readTextFile(test_support::sourceDir() + "/config/default.yaml"), ss::documentedDefaultConfig())
+      << "regenerate: segment_scene --print-config > config/default.yaml";
+  EXPECT_EQ(test_support::readTextFile(test_support::sourceDir() + "/cfg/live_parameters.yaml"), ss::liveParametersYaml())
+      << "regenerate: segment_scene --print-live-parameters > cfg/live_parameters.yaml";
+}
+
+TEST(ParameterSchema, EveryParameterIsDocumentedOnceWithItsDefaultInRange) {
+  const ss::SegmentationConfig defaults;
+  std::set<std::string> keys;
+  for (const ss::ParameterInfo& info : ss::parameterSchema()) {
+    EXPECT_TRUE(keys.insert(info.key).second) << info.key << " declared twice";
+    EXPECT_FALSE(info.doc.empty()) << info.key;
+    EXPECT_EQ(ss::configValueText(defaults, info.key), info.default_value) << info.key;
+    if (info.type == "float" || info.type == "int") {
+      EXPECT_LT(info.min, info.max) << info.key;
+    }
+  }
+  EXPECT_TRUE(ss::configProblems(defaults).empty());
+  EXPECT_NE(ss::findParameter("symmetry.filter.s_occl"), nullptr);
+  EXPECT_TRUE(ss::findParameter("symmetry.filter.s_occl")->live);
+  EXPECT_EQ(ss::findParameter("symmetry.filter.no_such_key"), nullptr);
+}
+
+TEST(ParameterSchema, ValuesAreValidatedTogetherInAnyOrder) {
+  // Checked one by one, lowering both alpha bounds failed in one order and passed in the other.
+  const ss::SegmentationConfig defaults;
+  const auto a = ss::configWithValues(defaults, {{"symmetry.cut.alpha_max_deg", "10"}, {"symmetry.cut.alpha_min_deg", "5"}});
+  const auto b = ss::configWithValues(defaults, {{"symmetry.cut.alpha_min_deg", "5"}, {"symmetry.cut.alpha_max_deg", "10"}});
+  EXPECT_FLOAT_EQ(a.symmetry.cut.alpha_min_deg, 5.0f);
+  EXPECT_FLOAT_EQ(a.symmetry.cut.alpha_max_deg, 10.0f);
+  EXPECT_FLOAT_EQ(b.symmetry.cut.alpha_min_deg, 5.0f);
+  EXPECT_FLOAT_EQ(b.symmetry.cut.alpha_max_deg, 10.0f);
+  EXPECT_THROW(ss::configWithValues(defaults, {{"symmetry.cut.alpha_max_deg", "10"}}), ss::InputError);
+}
+
+TEST(ParameterSchema, ARejectedConfigurationLeavesThePreviousOneInForce) {
+  // setConfigValue used to write the value before validating and never roll back: a rejected
+  // s_occl of 1.5 was logged as ignored yet used.
+  ss::SegmentationConfig config;
+  EXPECT_THROW(ss::setConfigValue(config, "symmetry.filter.s_occl", "1.5"), ss::InputError);
+  EXPECT_FLOAT_EQ(config.symmetry.filter.s_occl, 0.99f);
+  const ss::SegmentationConfig base = config;
+  try {
+    ss::configWithValues(base, {{"symmetry.filter.s_smooth", "0.05"}, {"symmetry.filter.s_occl", "1.5"},
+                                {"symmetry.filter.no_such_key", "1"}, {"lccp.min_points", "many"}});
+    ADD_FAILURE() << "accepted";
+  } catch (const ss::InputError& error) {
+    const std::string message = error.what();
+    for (const char* named : {"symmetry.filter.s_occl", "no_such_key", "lccp.min_points"}) {
+      EXPECT_NE(message.find(named), std::string::npos) << message;
+    }
+    EXPECT_EQ(message.find("s_smooth"), std::string::npos) << "a good value is no problem: " << message;
+  }
+  EXPECT_FLOAT_EQ(base.symmetry.filter.s_smooth, 0.02f);
 }
 
 TEST(SegmentsJson, RoundTripKeepsEverything) {

@@ -7,24 +7,38 @@
 #include <optional>
 #include <vector>
 
+#include "symmetry_segmentation/parameter_schema.h"
 #include "symmetry_segmentation/scene.h"
 
 namespace symmetry_segmentation {
 
 struct PreprocessParams {
-  float voxel_size = 0.01f;              ///< Voxel-grid leaf size (m).
-  bool remove_table = true;              ///< Find the supporting plane and drop points on/below it.
-  float table_margin = 0.01f;            ///< Points closer than this above the plane are dropped (m);
-                                         ///< with adaptive_table_margin, the largest margin used.
-  bool adaptive_table_margin = true;     ///< Margin = 3 sigma of the table points' noise (>= 5 mm),
-                                         ///< so low-noise fused clouds keep the objects' bottoms.
-  bool restore_object_bottoms = true;    ///< Give segments back their sides' points within the
-                                         ///< margin (object_bottoms.h); needs input normals.
-  float ransac_distance = 0.01f;         ///< RANSAC inlier distance when the plane is estimated (m).
+  float voxel_size = 0.01f;
+  bool remove_table = true;
+  float table_margin = 0.01f;
+  bool adaptive_table_margin = true;
+  bool restore_object_bottoms = true;
+  float ransac_distance = 0.01f;
   int ransac_iterations = 500;
-  float normal_radius = 0.03f;           ///< Neighbourhood radius for normal estimation (m).
-  float max_range = 0.0f;                ///< Drop points farther than this from the sensor (0: keep all).
+  float normal_radius = 0.03f;
+  float max_range = 0.0f;
 };
+
+inline void describeParameters(ParameterList<PreprocessParams>& list) {
+  using P = PreprocessParams;
+  list.add("voxel_size", &P::voxel_size, 0.003, 0.05, "m", "voxel-grid leaf size of the working cloud").live()
+      .add("remove_table", &P::remove_table, "find the supporting plane (table_plane.txt or RANSAC) and drop it")
+      .add("table_margin", &P::table_margin, 0.0, 0.1, "m",
+           "points closer than this above the plane count as table (with adaptive_table_margin: the largest margin)")
+      .add("adaptive_table_margin", &P::adaptive_table_margin,
+           "margin = 3 sigma of the table points' noise (5 mm .. table_margin), so fused clouds keep object bottoms")
+      .add("restore_object_bottoms", &P::restore_object_bottoms,
+           "give each segment back its sides' points within the margin (input normals across the table's)")
+      .add("ransac_distance", &P::ransac_distance, 0.001, 0.1, "m", "RANSAC inlier distance when the plane is estimated")
+      .add("ransac_iterations", &P::ransac_iterations, 1, 1000000, "", "RANSAC iterations when the plane is estimated")
+      .add("normal_radius", &P::normal_radius, 0.005, 0.5, "m", "radius for normal estimation when the cloud has none")
+      .add("max_range", &P::max_range, 0.0, 100.0, "m", "drop points farther than this from the sensor; 0 keeps all");
+}
 
 struct PreprocessedScene {
   Cloud::Ptr cloud;                        ///< Downsampled object points with normals.

@@ -1,87 +1,17 @@
-// YAML <-> parameter structs. Unknown keys are errors: a typo must not silently use a default.
+// YAML and text values -> SegmentationConfig, through the parameter schema. Unknown keys are
+// errors (a typo must not silently use a default), and a configuration is validated once, after
+// every value is in: a rule tying two parameters must not depend on the order they were given in.
 #include "symmetry_segmentation/segmentation_config.h"
 
 #include <cmath>
-#include <functional>
-#include <map>
-#include <sstream>
 
 #include <yaml-cpp/yaml.h>
 
+#include "config_schema.h"
 #include "symmetry_segmentation/errors.h"
 
 namespace symmetry_segmentation {
 namespace {
-
-using Setter = std::function<void(SegmentationConfig&, const YAML::Node&)>;
-
-template <typename T, typename Section>
-Setter field(Section SegmentationConfig::*section, T Section::*member) {
-  return [section, member](SegmentationConfig& config, const YAML::Node& value) {
-    config.*section.*member = value.as<T>();
-  };
-}
-
-template <typename T, typename Part>
-Setter symmetryField(Part SymmetryParams::*part, T Part::*member) {
-  return [part, member](SegmentationConfig& config, const YAML::Node& value) {
-    config.symmetry.*part.*member = value.as<T>();
-  };
-}
-
-const std::map<std::string, Setter>& setters() {
-  using C = SegmentationConfig;
-  static const std::map<std::string, Setter> table = {
-      {"preprocessing.voxel_size", field(&C::preprocessing, &PreprocessParams::voxel_size)},
-      {"preprocessing.remove_table", field(&C::preprocessing, &PreprocessParams::remove_table)},
-      {"preprocessing.table_margin", field(&C::preprocessing, &PreprocessParams::table_margin)},
-      {"preprocessing.adaptive_table_margin", field(&C::preprocessing, &PreprocessParams::adaptive_table_margin)},
-      {"preprocessing.restore_object_bottoms", field(&C::preprocessing, &PreprocessParams::restore_object_bottoms)},
-      {"preprocessing.ransac_distance", field(&C::preprocessing, &PreprocessParams::ransac_distance)},
-      {"preprocessing.ransac_iterations", field(&C::preprocessing, &PreprocessParams::ransac_iterations)},
-      {"preprocessing.normal_radius", field(&C::preprocessing, &PreprocessParams::normal_radius)},
-      {"preprocessing.max_range", field(&C::preprocessing, &PreprocessParams::max_range)},
-      {"euclidean.cluster_tolerance", field(&C::euclidean, &EuclideanParams::cluster_tolerance)},
-      {"euclidean.min_cluster_size", field(&C::euclidean, &EuclideanParams::min_cluster_size)},
-      {"euclidean.max_cluster_size", field(&C::euclidean, &EuclideanParams::max_cluster_size)},
-      {"lccp.voxel_resolution", field(&C::lccp, &LccpParams::voxel_resolution)},
-      {"lccp.seed_resolution", field(&C::lccp, &LccpParams::seed_resolution)},
-      {"lccp.color_importance", field(&C::lccp, &LccpParams::color_importance)},
-      {"lccp.spatial_importance", field(&C::lccp, &LccpParams::spatial_importance)},
-      {"lccp.normal_importance", field(&C::lccp, &LccpParams::normal_importance)},
-      {"lccp.concavity_tolerance", field(&C::lccp, &LccpParams::concavity_tolerance)},
-      {"lccp.smoothness_threshold", field(&C::lccp, &LccpParams::smoothness_threshold)},
-      {"lccp.min_segment_size", field(&C::lccp, &LccpParams::min_segment_size)},
-      {"lccp.use_extended_convexity", field(&C::lccp, &LccpParams::use_extended_convexity)},
-      {"lccp.use_sanity_criterion", field(&C::lccp, &LccpParams::use_sanity_criterion)},
-      {"lccp.min_points", field(&C::lccp, &LccpParams::min_points)},
-      {"symmetry.threads", field(&C::symmetry, &SymmetryParams::threads)},
-#define SYMSEG_DETECTION(name) {"symmetry.detection." #name, symmetryField(&SymmetryParams::detection, &SymmetryDetectionParams::name)}
-      SYMSEG_DETECTION(supervoxel_voxel), SYMSEG_DETECTION(supervoxel_seed), SYMSEG_DETECTION(merge_normal_angle_deg),
-      SYMSEG_DETECTION(boundary_radius), SYMSEG_DETECTION(curve_link_radius), SYMSEG_DETECTION(min_curve_points),
-      SYMSEG_DETECTION(tangent_half_window), SYMSEG_DETECTION(max_tangent_angle_deg),
-      SYMSEG_DETECTION(min_match_distance), SYMSEG_DETECTION(max_match_distance),
-      SYMSEG_DETECTION(mean_shift_angle_deg), SYMSEG_DETECTION(mean_shift_distance),
-      SYMSEG_DETECTION(min_plane_support), SYMSEG_DETECTION(merge_plane_angle_deg),
-      SYMSEG_DETECTION(merge_plane_distance), SYMSEG_DETECTION(max_hypotheses),
-      SYMSEG_DETECTION(upright_hypotheses),
-#undef SYMSEG_DETECTION
-#define SYMSEG_CUT(name) {"symmetry.cut." #name, symmetryField(&SymmetryParams::cut, &SymmetryCutParams::name)}
-      SYMSEG_CUT(dmax), SYMSEG_CUT(alpha_min_deg), SYMSEG_CUT(alpha_max_deg), SYMSEG_CUT(dbuf),
-      SYMSEG_CUT(sigma_convex_deg), SYMSEG_CUT(sigma_concave_deg), SYMSEG_CUT(lambda_smooth),
-      SYMSEG_CUT(lambda_sym), SYMSEG_CUT(neighbours),
-#undef SYMSEG_CUT
-#define SYMSEG_REFINE(name) {"symmetry.refinement." #name, symmetryField(&SymmetryParams::refinement, &SymmetryRefinementParams::name)}
-      SYMSEG_REFINE(enabled), SYMSEG_REFINE(icp_iterations), SYMSEG_REFINE(icp_max_correspondence),
-#undef SYMSEG_REFINE
-#define SYMSEG_FILTER(name) {"symmetry.filter." #name, symmetryField(&SymmetryParams::filter, &SymmetryFilterParams::name)}
-      SYMSEG_FILTER(s_occl), SYMSEG_FILTER(s_smooth), SYMSEG_FILTER(smooth_normal_angle_deg),
-      SYMSEG_FILTER(min_segment_points), SYMSEG_FILTER(duplicate_overlap), SYMSEG_FILTER(seam_crease_angle_deg),
-      SYMSEG_FILTER(island_gap), SYMSEG_FILTER(twin_free_fraction), SYMSEG_FILTER(color_seam_difference),
-#undef SYMSEG_FILTER
-  };
-  return table;
-}
 
 // Scalars are quoted; lists and maps are only named, since YAML::Dump of a cyclic alias
 // (a: &x [*x]) would recurse forever.
@@ -92,13 +22,40 @@ std::string describeValue(const YAML::Node& value) {
   return "(empty)";
 }
 
-void applyValue(SegmentationConfig& config, const std::string& key, const YAML::Node& value) {
-  const auto it = setters().find(key);
-  if (it == setters().end()) throw InputError("unknown parameter '" + key + "'");
+/// `value` as the field's type; InputError when it is not one.
+ParameterValue typedValue(const ParameterInfo& info, const YAML::Node& value) {
+  const std::string invalid = "parameter '" + info.key + "' has an invalid value " + describeValue(value);
   try {
-    it->second(config, value);
+    if (info.type == "string_list") {
+      if (!value.IsSequence()) throw InputError(invalid + ": expected a list of names");
+      std::vector<std::string> names;
+      for (const auto& item : value) {
+        if (!item.IsScalar()) throw InputError(invalid + ": expected a list of names");
+        names.push_back(item.Scalar());
+      }
+      return names;
+    }
+    if (!value.IsScalar()) throw InputError(invalid);
+    if (info.type == "bool") return value.as<bool>();
+    if (info.type == "int") return value.as<int>();
+    return value.as<float>();
   } catch (const YAML::Exception&) {
-    throw InputError("parameter '" + key + "' has an invalid value " + describeValue(value));
+    throw InputError(invalid);
+  }
+}
+
+/// Sets one value, or records why it cannot be set.
+void applyValue(SegmentationConfig& config, const std::string& key, const YAML::Node& value,
+                std::vector<std::string>& problems) {
+  const ConfigField* field = findConfigField(key);
+  if (!field) {
+    problems.push_back("unknown parameter '" + key + "'");
+    return;
+  }
+  try {
+    field->set(config, typedValue(field->info, value));
+  } catch (const InputError& error) {
+    problems.push_back(error.what());
   }
 }
 
@@ -115,149 +72,65 @@ std::string keyName(const YAML::Node& key, const std::string& prefix) {
 constexpr int kMaxKeyDepth = 4;
 
 // Nested maps become dotted keys: symmetry: {filter: {s_occl: x}} sets "symmetry.filter.s_occl".
-void applyMap(SegmentationConfig& config, const std::string& prefix, const YAML::Node& map, int depth) {
+void applyMap(SegmentationConfig& config, const std::string& prefix, const YAML::Node& map, int depth,
+              std::vector<std::string>& problems) {
   if (depth > kMaxKeyDepth) throw InputError("configuration nested deeper than " + std::to_string(kMaxKeyDepth) + " levels at '" + prefix + "'");
   for (const auto& entry : map) {
     const std::string key = prefix + "." + keyName(entry.first, prefix);
     if (entry.second.IsMap()) {
-      applyMap(config, key, entry.second, depth + 1);
+      applyMap(config, key, entry.second, depth + 1, problems);
     } else {
-      applyValue(config, key, entry.second);
+      applyValue(config, key, entry.second, problems);
     }
   }
 }
 
-// ---- Validation: every parameter in a range the methods can run with --------------------------
-
-void requireRange(const std::string& key, double value, double low, double high) {
-  if (!(value >= low && value <= high)) {  // also rejects NaN
-    std::ostringstream message;
-    message << key << " must be in [" << low << ", " << high << "], got " << value;
-    throw InputError(message.str());
-  }
+/// One line naming every problem.
+[[noreturn]] void throwProblems(const std::vector<std::string>& problems) {
+  std::string message;
+  for (const std::string& problem : problems) message += (message.empty() ? "" : "; ") + problem;
+  throw InputError(message);
 }
 
-void requirePositive(const std::string& key, double value) {
-  if (!(value > 0.0) || !std::isfinite(value)) throw InputError(key + " must be a finite number > 0");
-}
-
-void requireNonNegative(const std::string& key, double value) {
-  if (!(value >= 0.0) || !std::isfinite(value)) throw InputError(key + " must be a finite number >= 0");
-}
-
-void requireAngle(const std::string& key, double degrees) {
-  if (!(degrees > 0.0 && degrees <= 180.0)) throw InputError(key + " must be an angle in (0, 180] degrees");
-}
-
-void requireAtLeast(const std::string& key, long long value, long long minimum) {
-  if (value < minimum) throw InputError(key + " must be >= " + std::to_string(minimum));
-}
-
-void validatePreprocessing(const PreprocessParams& p) {
-  requireRange("preprocessing.voxel_size", p.voxel_size, 1e-3, 1.0);
-  requireNonNegative("preprocessing.table_margin", p.table_margin);
-  requirePositive("preprocessing.ransac_distance", p.ransac_distance);
-  requireRange("preprocessing.ransac_iterations", p.ransac_iterations, 1, 1000000);
-  requirePositive("preprocessing.normal_radius", p.normal_radius);
-  requireNonNegative("preprocessing.max_range", p.max_range);
-}
-
-void validateEuclidean(const EuclideanParams& e) {
-  requirePositive("euclidean.cluster_tolerance", e.cluster_tolerance);
-  requireAtLeast("euclidean.min_cluster_size", e.min_cluster_size, 1);
-  requireAtLeast("euclidean.max_cluster_size", e.max_cluster_size, e.min_cluster_size);
-}
-
-void validateLccp(const LccpParams& l) {
-  requireRange("lccp.voxel_resolution", l.voxel_resolution, 1e-3, 1.0);
-  requirePositive("lccp.seed_resolution", l.seed_resolution);
-  if (!(l.seed_resolution > l.voxel_resolution)) throw InputError("lccp needs 0 < voxel_resolution < seed_resolution");
-  requireNonNegative("lccp.color_importance", l.color_importance);
-  requireNonNegative("lccp.spatial_importance", l.spatial_importance);
-  requireNonNegative("lccp.normal_importance", l.normal_importance);
-  requireRange("lccp.concavity_tolerance", l.concavity_tolerance, 0.0, 180.0);
-  requireNonNegative("lccp.smoothness_threshold", l.smoothness_threshold);
-  requireAtLeast("lccp.min_segment_size", l.min_segment_size, 0);
-  requireAtLeast("lccp.min_points", l.min_points, 0);
-}
-
-void validateSymmetryDetection(const SymmetryDetectionParams& d) {
-  requireRange("symmetry.detection.supervoxel_voxel", d.supervoxel_voxel, 1e-3, 1.0);
-  requirePositive("symmetry.detection.supervoxel_seed", d.supervoxel_seed);
-  if (!(d.supervoxel_seed > d.supervoxel_voxel)) {
-    throw InputError("symmetry.detection needs 0 < supervoxel_voxel < supervoxel_seed");
-  }
-  requireAngle("symmetry.detection.merge_normal_angle_deg", d.merge_normal_angle_deg);
-  requirePositive("symmetry.detection.boundary_radius", d.boundary_radius);
-  requirePositive("symmetry.detection.curve_link_radius", d.curve_link_radius);
-  requireAtLeast("symmetry.detection.min_curve_points", d.min_curve_points, 1);
-  requireAtLeast("symmetry.detection.tangent_half_window", d.tangent_half_window, 1);
-  requireAngle("symmetry.detection.max_tangent_angle_deg", d.max_tangent_angle_deg);
-  requireNonNegative("symmetry.detection.min_match_distance", d.min_match_distance);
-  requirePositive("symmetry.detection.max_match_distance", d.max_match_distance);
-  if (!(d.max_match_distance > d.min_match_distance)) {
-    throw InputError("symmetry.detection needs min_match_distance < max_match_distance");
-  }
-  requireAngle("symmetry.detection.mean_shift_angle_deg", d.mean_shift_angle_deg);
-  requirePositive("symmetry.detection.mean_shift_distance", d.mean_shift_distance);
-  requireAtLeast("symmetry.detection.min_plane_support", d.min_plane_support, 1);
-  requireAngle("symmetry.detection.merge_plane_angle_deg", d.merge_plane_angle_deg);
-  requirePositive("symmetry.detection.merge_plane_distance", d.merge_plane_distance);
-  requireAtLeast("symmetry.detection.max_hypotheses", d.max_hypotheses, 1);
-}
-
-void validateSymmetryCut(const SymmetryCutParams& c) {
-  requirePositive("symmetry.cut.dmax", c.dmax);
-  requirePositive("symmetry.cut.dbuf", c.dbuf);
-  if (!(c.dbuf > c.dmax)) throw InputError("symmetry.cut needs 0 < dmax < dbuf");
-  requireAngle("symmetry.cut.alpha_min_deg", c.alpha_min_deg);
-  requireAngle("symmetry.cut.alpha_max_deg", c.alpha_max_deg);
-  if (!(c.alpha_min_deg < c.alpha_max_deg)) throw InputError("symmetry.cut needs alpha_min_deg < alpha_max_deg");
-  // Decay scales, not angles between directions: the paper's convex one is 360 degrees.
-  requirePositive("symmetry.cut.sigma_convex_deg", c.sigma_convex_deg);
-  requirePositive("symmetry.cut.sigma_concave_deg", c.sigma_concave_deg);
-  requireNonNegative("symmetry.cut.lambda_smooth", c.lambda_smooth);
-  requireNonNegative("symmetry.cut.lambda_sym", c.lambda_sym);
-  requireRange("symmetry.cut.neighbours", c.neighbours, 1, 50);
-}
-
-void validateSymmetryRest(const SymmetryParams& sym) {
-  requireRange("symmetry.refinement.icp_iterations", sym.refinement.icp_iterations, 0, 10000);
-  requirePositive("symmetry.refinement.icp_max_correspondence", sym.refinement.icp_max_correspondence);
-  requireRange("symmetry.filter.s_occl", sym.filter.s_occl, 0.0, 1.0);
-  requireRange("symmetry.filter.s_smooth", sym.filter.s_smooth, 0.0, 1.0);
-  requireAngle("symmetry.filter.smooth_normal_angle_deg", sym.filter.smooth_normal_angle_deg);
-  requireAtLeast("symmetry.filter.min_segment_points", sym.filter.min_segment_points, 1);
-  requireRange("symmetry.filter.duplicate_overlap", sym.filter.duplicate_overlap, 0.0, 1.0);
-  requireRange("symmetry.filter.seam_crease_angle_deg", sym.filter.seam_crease_angle_deg, 0.0, 180.0);
-  requireRange("symmetry.filter.island_gap", sym.filter.island_gap, 0.0, 0.2);
-  requireRange("symmetry.filter.twin_free_fraction", sym.filter.twin_free_fraction, 0.0, 1.0);
-  requireRange("symmetry.filter.color_seam_difference", sym.filter.color_seam_difference, 0.0, 200.0);
-  requireRange("symmetry.threads", sym.threads, 0, 1024);
-}
-
-void validate(const SegmentationConfig& config) {
-  validatePreprocessing(config.preprocessing);
-  validateEuclidean(config.euclidean);
-  validateLccp(config.lccp);
-  validateSymmetryDetection(config.symmetry.detection);
-  validateSymmetryCut(config.symmetry.cut);
-  validateSymmetryRest(config.symmetry);
+SegmentationConfig validated(SegmentationConfig config, std::vector<std::string> problems) {
+  for (std::string& problem : configProblems(config)) problems.push_back(std::move(problem));
+  if (!problems.empty()) throwProblems(problems);
+  return config;
 }
 
 }  // namespace
+
+std::vector<std::string> configProblems(const SegmentationConfig& config) {
+  std::vector<std::string> problems;
+  for (const ConfigField& field : configFields()) {
+    const ParameterInfo& info = field.info;
+    if (info.type != "float" && info.type != "int") continue;
+    const ParameterValue value = field.get(config);
+    const double number = info.type == "int" ? std::get<int>(value) : std::get<float>(value);
+    if (!(number >= info.min && number <= info.max)) {  // also rejects NaN
+      problems.push_back(info.key + " must be in " + rangeText(info) + ", got " + formatParameterValue(value));
+    }
+  }
+  for (const ConfigSection& section : configSections()) {
+    for (const auto& rule : section.rules) {
+      std::string problem = rule(config);
+      if (!problem.empty()) problems.push_back(std::move(problem));
+    }
+  }
+  return problems;
+}
 
 SegmentationConfig configFromYaml(const YAML::Node& node) {
   SegmentationConfig config;
   if (!node || node.IsNull()) return config;
   if (!node.IsMap()) throw InputError("configuration must be a map of sections");
+  std::vector<std::string> problems;
   for (const auto& section : node) {
     const std::string section_name = keyName(section.first, "");
     if (!section.second.IsMap()) throw InputError("configuration section '" + section_name + "' must be a map");
-    applyMap(config, section_name, section.second, 2);
+    applyMap(config, section_name, section.second, 2, problems);
   }
-  validate(config);
-  return config;
+  return validated(std::move(config), std::move(problems));
 }
 
 SegmentationConfig loadConfigFile(const std::string& path) {
@@ -278,15 +151,30 @@ SegmentationConfig loadConfigFile(const std::string& path) {
   }
 }
 
-void setConfigValue(SegmentationConfig& config, const std::string& key, const std::string& value) {
-  YAML::Node node;
-  try {
-    node = YAML::Load(value);
-  } catch (const YAML::Exception&) {
-    throw InputError("parameter '" + key + "' has an unparsable value '" + value + "'");
+SegmentationConfig configWithValues(const SegmentationConfig& base, const ConfigValues& values) {
+  SegmentationConfig config = base;
+  std::vector<std::string> problems;
+  for (const auto& [key, text] : values) {
+    YAML::Node node;
+    try {
+      node = YAML::Load(text);
+    } catch (const YAML::Exception&) {
+      problems.push_back("parameter '" + key + "' has an unparsable value '" + text + "'");
+      continue;
+    }
+    applyValue(config, key, node, problems);
   }
-  applyValue(config, key, node);
-  validate(config);
+  return validated(std::move(config), std::move(problems));
+}
+
+void setConfigValue(SegmentationConfig& config, const std::string& key, const std::string& value) {
+  config = configWithValues(config, {{key, value}});
+}
+
+std::string configValueText(const SegmentationConfig& config, const std::string& key) {
+  const ConfigField* field = findConfigField(key);
+  if (!field) throw InputError("unknown parameter '" + key + "'");
+  return formatParameterValue(field->get(config));
 }
 
 }  // namespace symmetry_segmentation

@@ -38,7 +38,7 @@ const char* const kUsage =
 
 struct Options {
   std::string input, output, cloud_topic, sensor_frame, prefix = "/segmentation", method = ss::defaultMethod(), config;
-  std::vector<std::pair<std::string, std::string>> overrides;
+  ss::ConfigValues overrides;
 };
 
 Options parse(int argc, char** argv) {
@@ -82,8 +82,8 @@ int main(int argc, char** argv) {
   pcl::console::setVerbosityLevel(pcl::console::L_ERROR);
   const Options options = parse(argc, argv);
   try {
-    ss::SegmentationConfig config = options.config.empty() ? ss::SegmentationConfig{} : ss::loadConfigFile(options.config);
-    for (const auto& [key, value] : options.overrides) ss::setConfigValue(config, key, value);
+    const ss::SegmentationConfig config = ss::configWithValues(
+        options.config.empty() ? ss::SegmentationConfig{} : ss::loadConfigFile(options.config), options.overrides);
     const auto segmenter = ss::makeSegmenter(options.method, config);
 
     rosbag::Bag input;

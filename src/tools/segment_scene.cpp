@@ -9,6 +9,7 @@
 #include <pcl/console/print.h>
 
 #include "symmetry_segmentation/command_line.h"
+#include "symmetry_segmentation/parameter_schema.h"
 #include "symmetry_segmentation/scene_io.h"
 #include "symmetry_segmentation/segmentation_output.h"
 #include "symmetry_segmentation/segmenter.h"
@@ -22,13 +23,14 @@ namespace {
 const char* const kUsage =
     "usage: segment_scene <scene> --output DIR [--method M] [--config file.yaml]\n"
     "                     [--set section.key=value]... [--no-png]\n"
+    "       segment_scene --print-config | --print-live-parameters\n"
     "  <scene>    a scene directory (cloud.ply|cloud.pcd, occupancy.bt, table_plane.txt, labels.txt)\n"
     "             or a single .ply/.pcd cloud file\n"
     "  --method   segmentation method (default: " ;
 
 struct Options {
   std::string scene, output, method = ss::defaultMethod(), config;
-  std::vector<std::pair<std::string, std::string>> overrides;
+  ss::ConfigValues overrides;
   bool png = true;
 };
 
@@ -36,8 +38,13 @@ void printUsage() {
   std::cout << kUsage << ss::defaultMethod() << "; available:";
   for (const auto& m : ss::availableMethods()) std::cout << ' ' << m;
   std::cout << ")\n  --config   YAML parameter file (see config/default.yaml)\n"
-               "  --set      override one parameter, e.g. --set lccp.concavity_tolerance=15\n"
-               "  --no-png   skip the rendered picture\n";
+               "  --set      override one parameter, e.g. --set lccp.concavity_tolerance=15 (all --set\n"
+               "             values are applied, then the configuration is checked once)\n"
+               "  --no-png   skip the rendered picture\n"
+               "  --print-config           print every parameter at its default, documented\n"
+               "                           (the text of config/default.yaml), and exit\n"
+               "  --print-live-parameters  print the parameters the node takes while it runs\n"
+               "                           (the text of cfg/live_parameters.yaml), and exit\n";
 }
 
 Options parse(int argc, char** argv) {
@@ -56,6 +63,12 @@ Options parse(int argc, char** argv) {
       options.config = arguments.value();
     } else if (arg == "--set") {
       options.overrides.push_back(arguments.assignmentValue());
+    } else if (arg == "--print-config") {
+      std::cout << ss::documentedDefaultConfig();
+      std::exit(0);
+    } else if (arg == "--print-live-parameters") {
+      std::cout << ss::liveParametersYaml();
+      std::exit(0);
     } else if (arg == "--no-png") {
       options.png = false;
     } else if (!arg.empty() && arg[0] == '-') {
@@ -87,8 +100,8 @@ int main(int argc, char** argv) {
   pcl::console::setVerbosityLevel(pcl::console::L_ERROR);
   const Options options = parse(argc, argv);
   try {
-    ss::SegmentationConfig config = options.config.empty() ? ss::SegmentationConfig{} : ss::loadConfigFile(options.config);
-    for (const auto& [key, value] : options.overrides) ss::setConfigValue(config, key, value);
+    const ss::SegmentationConfig config = ss::configWithValues(
+        options.config.empty() ? ss::SegmentationConfig{} : ss::loadConfigFile(options.config), options.overrides);
     const auto segmenter = ss::makeSegmenter(options.method, config);
 
     ss::Stopwatch load_watch;
