@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "symmetry_segmentation/errors.h"
+#include "symmetry_segmentation/point_validity.h"
 
 namespace symmetry_segmentation {
 
@@ -18,9 +19,15 @@ Eigen::Vector4d planeFromCoefficients(const std::vector<double>& values) {
     text << "plane coefficients [" << plane.transpose() << "] are not all finite";
     throw InputError(text.str());
   }
-  const double norm = plane.head<3>().norm();
-  if (!(norm > 1e-9)) throw InputError("plane normal (a, b, c) is zero");
-  return plane / norm;
+  // Scaled before the norm, as the core reads table_plane.txt: huge or tiny values stay finite.
+  const double scale = plane.head<3>().cwiseAbs().maxCoeff();
+  if (!(scale > 0.0)) throw InputError("plane normal (a, b, c) is zero");
+  Eigen::Vector4d unit = plane / scale;
+  unit /= unit.head<3>().norm();
+  if (!unit.allFinite() || std::fabs(unit[3]) > kMaxUsableCoordinate) {
+    throw InputError("plane offset d / |(a, b, c)| is not finite or farther than 100 km");
+  }
+  return unit;
 }
 
 Eigen::Vector4d transformPlane(const Eigen::Vector4d& plane, const Eigen::Isometry3d& source_to_target) {

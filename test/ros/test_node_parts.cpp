@@ -237,6 +237,9 @@ TEST(TablePlane, CoefficientsAreCheckedAndNormalised) {
   EXPECT_THROW(ss::planeFromCoefficients({0, 0, 0, 1}), ss::InputError);
   EXPECT_THROW(ss::planeFromCoefficients({0, NAN, 1, 0}), ss::InputError);
   EXPECT_THROW(ss::planeFromCoefficients({0, 0, 1, INFINITY}), ss::InputError);
+  EXPECT_THROW(ss::planeFromCoefficients({0, 0, 1e-300, 1}), ss::InputError) << "d / |n| is 1e300 m";
+  EXPECT_TRUE(ss::planeFromCoefficients({0, 0, 1e200, -1e200}).isApprox(Eigen::Vector4d(0, 0, 1, -1)));
+  EXPECT_TRUE(ss::planeFromCoefficients({0, 3e-200, 4e-200, 0}).isApprox(Eigen::Vector4d(0, 0.6, 0.8, 0)));
   try {
     ss::planeFromCoefficients({1, 2});
     FAIL();
