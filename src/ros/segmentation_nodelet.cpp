@@ -29,14 +29,24 @@ using Response = SegmentCloud::Response;
 constexpr double kTimeJumpTolerance = 0.5;  // s: smaller jumps back are not acted on
 
 /// Names in the private namespace the node reads itself; every other name is an algorithm
-/// parameter. lazy, verbose_connection and duration_to_warn_no_connection are NodeletLazy's,
-/// diagnostic_period diagnostic_updater's.
+/// parameter. lazy, verbose_connection, duration_to_warn_no_connection and (in
+/// segmentation_node, whose process name is the nodelet's) use_multithread_callback are
+/// NodeletLazy's, diagnostic_period diagnostic_updater's.
 const std::set<std::string>& interfaceParameterNames() {
-  static const std::set<std::string> names = {
-      "mode",        "method",           "fixed_frame",       "sensor_frame",
-      "table_plane", "table_plane_frame", "transform_timeout", "service_threads",
-      "max_input_points", "diagnostic_period", "lazy",     "verbose_connection",
-      "duration_to_warn_no_connection"};
+  static const std::set<std::string> names = {"mode",
+                                              "method",
+                                              "fixed_frame",
+                                              "sensor_frame",
+                                              "table_plane",
+                                              "table_plane_frame",
+                                              "transform_timeout",
+                                              "service_threads",
+                                              "max_input_points",
+                                              "diagnostic_period",
+                                              "lazy",
+                                              "verbose_connection",
+                                              "duration_to_warn_no_connection",
+                                              "use_multithread_callback"};
   return names;
 }
 

@@ -25,7 +25,12 @@ using Response = ss::SegmentCloud::Response;
 
 namespace {
 
-const std::string kScene = std::string(SHARED_DATA_DIR) + "/real/kinfu_tabletop";
+/// The ~scene parameter, or ../shared/data/real/kinfu_tabletop.
+std::string sceneDirectory() {
+  std::string scene;
+  ros::NodeHandle("~").getParam("scene", scene);
+  return scene.empty() ? std::string(SHARED_DATA_DIR) + "/real/kinfu_tabletop" : scene;
+}
 
 using SegmentSet = std::multiset<std::vector<int>>;
 
@@ -65,11 +70,12 @@ ss::SegmentCloud segmentLatest() {
 }  // namespace
 
 TEST(SegmentationKinfu, NodeEqualsCoreWithAndWithoutTheTablePlane) {
-  if (!boost::filesystem::exists(kScene + "/cloud.ply")) GTEST_SKIP() << kScene << " is absent";
+  const std::string directory = sceneDirectory();
+  if (!boost::filesystem::exists(directory + "/cloud.ply")) GTEST_SKIP() << directory << " is absent";
   std::string config_file;
   ASSERT_TRUE(ros::NodeHandle("~").getParam("config_file", config_file));
   const ss::SegmentationConfig config = ss::loadConfigFile(config_file);
-  const ss::Scene file_scene = ss::loadScene(kScene);
+  const ss::Scene file_scene = ss::loadScene(directory);
   ASSERT_TRUE(file_scene.occupancy);
   ASSERT_TRUE(file_scene.table_plane);
 
@@ -134,6 +140,9 @@ TEST(SegmentationKinfu, NodeEqualsCoreWithAndWithoutTheTablePlane) {
   const SegmentSet core_with = segmentsOf(ss::makeSegmenter("symmetry", config)->segment(scene));
   EXPECT_EQ(segmentsOf(with.response.objects), core_with);
   EXPECT_GT(core_with.size(), core_without.size()) << "the known plane finds more objects on this scene";
+  // And what segment_scene finds in the scene directory (the .bt map with its log-odds instead
+  // of the binary message): the same here.
+  EXPECT_EQ(segmentsOf(with.response.objects), segmentsOf(ss::makeSegmenter("symmetry", config)->segment(file_scene)));
   std::cout << "kinfu with the table plane: node " << with.response.objects.objects.size() << " objects, core "
             << core_with.size() << std::endl;
 }
