@@ -192,10 +192,14 @@ void SegmentationNodelet::startLiveParameters() {
   // name and the start-up name at once. They start from the values in force, not from the .cfg
   // defaults, and write those back to the parameter server.
   for (const auto& type : liveSectionTypes()) {
-    live_sections_.push_back(type.start(ros::NodeHandle(*pnh_, parameterPath(type.section)), reconfigure_mutex_,
-                                        in_force, [this](const ConfigValues& requested) {
-                                          return applyLiveChange(requested);
-                                        }));
+    try {
+      live_sections_.push_back(type.start(ros::NodeHandle(*pnh_, parameterPath(type.section)), reconfigure_mutex_,
+                                          in_force, [this](const ConfigValues& requested) {
+                                            return applyLiveChange(requested);
+                                          }));
+    } catch (const std::exception& error) {  // a generated type the schema does not match
+      NODELET_ERROR("no live parameters in ~%s: %s", parameterPath(type.section).c_str(), error.what());
+    }
   }
   interface_server_ = std::make_unique<dynamic_reconfigure::Server<LiveInterfaceConfig>>(reconfigure_mutex_, *pnh_);
   LiveInterfaceConfig live;

@@ -6,14 +6,15 @@
 // cfg/live_parameters.yaml; nothing here names a parameter.
 
 #include <functional>
+#include <iomanip>
 #include <memory>
 #include <sstream>
-#include <iomanip>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <boost/thread/recursive_mutex.hpp>
-#include <dynamic_reconfigure/config_tools.h>
+#include <dynamic_reconfigure/Config.h>
 #include <dynamic_reconfigure/server.h>
 #include <ros/node_handle.h>
 
@@ -63,11 +64,13 @@ ConfigValues liveValues(const std::string& section, const ConfigT& config) {
   return values;
 }
 
-/// Sets the parameters of `config` from `values` (dotted keys with YAML text; others ignored).
-/// Throws InputError when a value does not read as its parameter's type or a parameter is missing.
+/// Appends to `message` the parameters `names_and_types` (name, dynamic_reconfigure type "bool",
+/// "int" or "double") of `section`, read from `values` (dotted keys with YAML text; others are
+/// ignored). Throws InputError when one is missing or does not read as its type.
 void setLiveValues(const std::string& section, const ConfigValues& values, dynamic_reconfigure::Config& message,
                    const std::vector<std::pair<std::string, std::string>>& names_and_types);
 
+/// Sets the parameters of `config` from `values`, as above.
 template <class ConfigT>
 void setLiveValues(const std::string& section, const ConfigValues& values, ConfigT& config) {
   std::vector<std::pair<std::string, std::string>> names_and_types;
