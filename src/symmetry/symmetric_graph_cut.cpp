@@ -1,4 +1,4 @@
-// Stage 3: graph-cut segmentation of the working cloud for one symmetry plane (paper eq. 7-12).
+// Stage 4, cut: graph-cut segmentation of the working cloud for one symmetry plane (paper eq. 7-12).
 // Nodes are points; source = foreground. Unary costs come from ReflectionDataTerm, pairwise
 // links are the k-NN smoothness links (eq. 11, precomputed) and, per plane, symmetric links
 // between a point and the point its reflection lands on (eq. 12).
@@ -10,6 +10,8 @@
 
 #include <maxflow/graph.h>
 
+#include "symmetry_segmentation/parallel_for.h"
+#include "symmetry_segmentation/symmetry/pipeline_state.h"
 #include "symmetry_segmentation/symmetry/smoothness_weight.h"
 #include "symmetry_segmentation/symmetry/strongest_component.h"
 
@@ -137,6 +139,21 @@ std::vector<int> SymmetricGraphCut::segment(const SymmetryPlane& plane, const st
     foreground[i] = graph.what_segment(i, FlowGraph::SINK) == FlowGraph::SOURCE;
   }
   return strongestForegroundComponent(foreground, neighbours_, symmetric_links, support, anchor);
+}
+
+void GraphCutStage::run(PipelineState& state) const {
+  const std::size_t first = state.candidates.size();
+  state.candidates.resize(state.hypotheses.size());
+  parallelFor(state.hypotheses.size() - first, state.threads, [&](std::size_t k) {
+    const std::size_t i = first + k;
+    CandidateSegment& candidate = state.candidates[i];
+    candidate.plane = state.hypotheses[i].plane;
+    candidate.points = state.graph->segment(candidate.plane, state.hypotheses[i].anchor);
+    if (static_cast<int>(candidate.points.size()) >= filter_.min_segment_points) {
+      candidate.scores = state.evidence->scores(candidate.points, candidate.plane);
+    }
+  });
+  state.count("cuts", state.hypotheses.size() - first);
 }
 
 }  // namespace symmetry_segmentation

@@ -504,14 +504,14 @@ TEST(Parameters, NestedNamespacesSetTheSameKeysAsTheYamlFile) {
   XmlRpc::XmlRpcValue symmetry;
   symmetry["filter"]["s_occl"] = 0.97;
   symmetry["filter"]["min_segment_points"] = 55;
-  symmetry["refinement"]["enabled"] = false;
+  symmetry["curves"]["min_curve_points"] = 7;
   symmetry["filter"]["no_such_key"] = 1.0;
   ss::SegmentationConfig config;
   std::vector<std::string> errors;
   ss::applyParameters("symmetry", symmetry, config, errors);
   EXPECT_FLOAT_EQ(config.symmetry.filter.s_occl, 0.97f);
   EXPECT_EQ(config.symmetry.filter.min_segment_points, 55);
-  EXPECT_FALSE(config.symmetry.refinement.enabled);
+  EXPECT_EQ(config.symmetry.curves.min_curve_points, 7);
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_NE(errors[0].find("symmetry.filter.no_such_key"), std::string::npos);
 
