@@ -64,7 +64,8 @@ SymmetricGraphCut::SymmetricGraphCut(Cloud::ConstPtr cloud, const OccupancyMap& 
     if (isFinitePoint(point)) cloud_box_.extend(point.getVector3fMap());
   }
   // Reflections that matter land within dbuf of the cloud (farther ones are judged free or
-  // unknown by the map itself); below the table they are decided by the table plane.
+  // unknown by the map itself); below the table they are decided by the table plane. The 2 cm
+  // beyond is fixed slack of the cache, not a tunable: the answers are the map's either way.
   Eigen::AlignedBox3f reach = cloud_box_;
   if (!reach.isEmpty()) {
     const Eigen::Vector3f margin = Eigen::Vector3f::Constant(params_.dbuf + params_.dmax + 0.02f);
