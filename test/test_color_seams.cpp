@@ -8,6 +8,7 @@
 #include <numeric>
 #include <random>
 
+#include "fake_evidence.h"
 #include "symmetry_segmentation/symmetry/color_seams.h"
 #include "symmetry_segmentation/symmetry/stray_color_pieces.h"
 #include "symmetry_segmentation/symmetry/symmetry_plane.h"
@@ -91,28 +92,12 @@ ss::CandidateSegment everything(const ss::Cloud& cloud, const ss::SymmetryPlane&
   return segment;
 }
 
-// The point nearest a point's mirror image, if it is within half a centimetre.
-ss::ReflectionMatch matchIn(const ss::Cloud& cloud) {
-  return [&cloud](int index, const ss::SymmetryPlane& mirror) {
-    const Eigen::Vector3f image = ss::reflectPoint(mirror, cloud[index].getVector3fMap());
-    int best = -1;
-    float nearest = 0.005f;
-    for (std::size_t j = 0; j < cloud.size(); ++j) {
-      const float d = (cloud[j].getVector3fMap() - image).norm();
-      if (d < nearest) {
-        nearest = d;
-        best = static_cast<int>(j);
-      }
-    }
-    return best;
-  };
-}
-
-ss::SegmentScores unitScores(const std::vector<int>&, const ss::SymmetryPlane&) {
-  ss::SegmentScores scores;
-  scores.occlusion = 1.0f;
-  scores.smoothness = 0.0f;
-  return scores;
+// Links within 1.5 cm; a reflection lands on the point nearest its mirror image within half a
+// centimetre; every segment scores occlusion 1, smoothness 0.
+test_support::FakeEvidence evidenceOf(const ss::Cloud& cloud) {
+  test_support::FakeEvidence evidence(cloud, linksWithin(cloud, 0.015f));
+  evidence.landOnNearestWithin(0.005f);
+  return evidence;
 }
 
 std::vector<int> pointsOfColor(const ss::Cloud& cloud, const Rgb& color) {
@@ -133,7 +118,7 @@ const ss::SymmetryPlane kAcross = plane(Eigen::Vector3f::UnitX(), 0.0f);
 
 std::size_t split(std::vector<ss::CandidateSegment>& segments, const ss::Cloud& cloud,
                   const std::vector<ss::CandidateSegment>& found = {}) {
-  return ss::splitAtColorSeams(segments, found, cloud, linksWithin(cloud, 0.015f), matchIn(cloud), unitScores);
+  return ss::splitAtColorSeams(segments, found, evidenceOf(cloud), ss::ColorSeamParams{});
 }
 
 }  // namespace
@@ -210,13 +195,13 @@ TEST(ColorSeams, ACapOnANarrowNeckStaysWithItsBottle) {
   params.min_part_points = 20;
   ASSERT_GT(cap.size(), params.min_part_fraction * cloud.size());
   std::vector<ss::CandidateSegment> segments = {everything(cloud, kAcross)};
-  EXPECT_EQ(ss::splitAtColorSeams(segments, {}, cloud, linksWithin(cloud, 0.015f), matchIn(cloud), unitScores, params),
+  EXPECT_EQ(ss::splitAtColorSeams(segments, {}, evidenceOf(cloud), params),
             0u);
   // The same cap on a neck as wide as the bottle would be a box on a box.
   const ss::Cloud wide = boxSurfaces({Box{{-0.015f, -0.015f, 0.0f}, {0.015f, 0.015f, 0.12f}, kRed},
                                       Box{{-0.015f, -0.015f, 0.12f}, {0.015f, 0.015f, 0.16f}, kBlue}});
   segments = {everything(wide, kAcross)};
-  EXPECT_EQ(ss::splitAtColorSeams(segments, {}, wide, linksWithin(wide, 0.015f), matchIn(wide), unitScores, params),
+  EXPECT_EQ(ss::splitAtColorSeams(segments, {}, evidenceOf(wide), params),
             1u);
 }
 
@@ -267,7 +252,7 @@ TEST(ColorSeams, ASmallPartColouredApartAtAConcaveCreaseStaysWithItsObject) {
   ASSERT_GE(handle, params.min_part_fraction * cloud.size()) << "a candidate part, kept by its size alone";
   ASSERT_LT(handle, params.min_touching_part_fraction * cloud.size());
   std::vector<ss::CandidateSegment> segments = {everything(cloud, kAcross)};
-  EXPECT_EQ(ss::splitAtColorSeams(segments, {}, cloud, linksWithin(cloud, 0.015f), matchIn(cloud), unitScores, params),
+  EXPECT_EQ(ss::splitAtColorSeams(segments, {}, evidenceOf(cloud), params),
             0u);
 }
 
@@ -294,7 +279,7 @@ struct StrayStrip {
 TEST(ColorSeams, AStripOfTheNextObjectsColourMovesToThatObject) {
   StrayStrip scene;
   ASSERT_LT(scene.strip.size(), 0.3 * scene.segments[0].points.size());
-  EXPECT_EQ(ss::moveStrayColorPieces(scene.segments, scene.cloud, linksWithin(scene.cloud, 0.015f)), scene.strip.size());
+  EXPECT_EQ(ss::moveStrayColorPieces(scene.segments, scene.cloud, linksWithin(scene.cloud, 0.015f), {}), scene.strip.size());
   EXPECT_EQ(scene.segments[0].points, pointsOfColor(scene.cloud, kRed));
   EXPECT_EQ(scene.segments[1].points, pointsOfColor(scene.cloud, kBlue));
 }
@@ -304,7 +289,7 @@ TEST(ColorSeams, APieceLikeNoNeighbourStays) {
   StrayStrip scene;
   for (int i : scene.strip) scene.cloud[i].g = 200, scene.cloud[i].r = scene.cloud[i].b = 40;
   const auto before = scene.segments;
-  EXPECT_EQ(ss::moveStrayColorPieces(scene.segments, scene.cloud, linksWithin(scene.cloud, 0.015f)), 0u);
+  EXPECT_EQ(ss::moveStrayColorPieces(scene.segments, scene.cloud, linksWithin(scene.cloud, 0.015f), {}), 0u);
   EXPECT_EQ(scene.segments[0].points, before[0].points);
   EXPECT_EQ(scene.segments[1].points, before[1].points);
 }

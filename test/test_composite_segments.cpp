@@ -1,8 +1,9 @@
-// Stage 5c: a segment made of two objects meeting at a concave seam is replaced by the two.
+// Stage composites: a segment made of two objects meeting at a concave seam is replaced by the two.
 #include <gtest/gtest.h>
 
 #include <numeric>
 
+#include "fake_evidence.h"
 #include "symmetry_segmentation/symmetry/composite_segments.h"
 
 namespace ss = symmetry_segmentation;
@@ -52,6 +53,18 @@ int mirrorAcrossSeam(int index, const ss::SymmetryPlane&) {
   return mirrored;
 }
 
+/// Evidence over the chain (or other links) with the test's creases and reflections; rest
+/// segments score occlusion 0.5.
+template <typename Crease, typename Match>
+test_support::FakeEvidence evidence(std::vector<std::vector<int>> links, Crease crease, Match lands_on) {
+  const std::size_t points = links.size();
+  test_support::FakeEvidence result(points, std::move(links));
+  result.crease = crease;
+  result.lands_on = lands_on;
+  result.score = markedScores;
+  return result;
+}
+
 }  // namespace
 
 TEST(CompositeSegments, TwoObjectsMeetingAtACreaseReplaceTheirUnion) {
@@ -59,7 +72,7 @@ TEST(CompositeSegments, TwoObjectsMeetingAtACreaseReplaceTheirUnion) {
   const std::vector<ss::CandidateSegment> parts = {segment(0, 99, 1.0f), segment(0, 59, 2.0f), segment(60, 99, 3.0f)};
   ss::CompositeSegmentParams params;
   params.min_seam_links = 1;
-  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, chainNeighbours(), creaseAtSeam, mirrorWithinObject, markedScores, params), 1u);
+  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, evidence(chainNeighbours(), creaseAtSeam, mirrorWithinObject), params), 1u);
   ASSERT_EQ(segments.size(), 2u) << "the union is gone; A, already present, is not added twice";
   EXPECT_EQ(segments[0].points, segment(0, 59).points);
   EXPECT_EQ(segments[1].points, segment(60, 99).points);
@@ -71,7 +84,7 @@ TEST(CompositeSegments, AFlatOrConvexSeamKeepsTheSegmentWhole) {
   const std::vector<ss::CandidateSegment> parts = {segment(0, 59), segment(60, 99)};
   ss::CompositeSegmentParams params;
   params.min_seam_links = 1;
-  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, chainNeighbours(), noCrease, mirrorWithinObject, markedScores, params), 0u);
+  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, evidence(chainNeighbours(), noCrease, mirrorWithinObject), params), 0u);
   ASSERT_EQ(segments.size(), 1u);
   EXPECT_EQ(segments[0].points.size(), 100u);
 }
@@ -83,11 +96,11 @@ TEST(CompositeSegments, MirrorHalvesOfOneObjectStayTogether) {
   const auto creaseInMiddle = [](int a, int b) { return std::min(a, b) == 49 && std::max(a, b) == 50; };
   ss::CompositeSegmentParams params;
   params.min_seam_links = 1;
-  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, chainNeighbours(), creaseInMiddle, mirrorAcrossSeam, markedScores, params), 0u);
+  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, evidence(chainNeighbours(), creaseInMiddle, mirrorAcrossSeam), params), 0u);
   EXPECT_EQ(segments.size(), 1u);
   // The same parts under a plane that maps each onto itself are two objects.
   const auto mirrorWithinHalves = [](int index, const ss::SymmetryPlane&) { return index < 50 ? 49 - index : 149 - index; };
-  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, chainNeighbours(), creaseInMiddle, mirrorWithinHalves, markedScores, params), 1u);
+  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, evidence(chainNeighbours(), creaseInMiddle, mirrorWithinHalves), params), 1u);
   EXPECT_EQ(segments.size(), 2u);
 }
 
@@ -96,19 +109,16 @@ TEST(CompositeSegments, PartsMustCoverTheSegmentAndBeSubstantial) {
   params.min_seam_links = 1;
   // Together only 70 of 100 points: a third object (or more) is in the segment.
   std::vector<ss::CandidateSegment> uncovered = {segment(0, 99)};
-  EXPECT_EQ(ss::splitCompositeSegments(uncovered, {segment(0, 34), segment(60, 94)}, chainNeighbours(), creaseAtSeam,
-                                       mirrorWithinObject, markedScores, params),
+  EXPECT_EQ(ss::splitCompositeSegments(uncovered, {segment(0, 34), segment(60, 94)}, evidence(chainNeighbours(), creaseAtSeam, mirrorWithinObject), params),
             0u);
   // A sliver (10 of 100 points) is a detail of the object, not a second object.
   std::vector<ss::CandidateSegment> sliver = {segment(0, 99)};
   const auto creaseAt90 = [](int a, int b) { return std::min(a, b) == 89 && std::max(a, b) == 90; };
-  EXPECT_EQ(ss::splitCompositeSegments(sliver, {segment(0, 89), segment(90, 99)}, chainNeighbours(), creaseAt90,
-                                       mirrorWithinObject, markedScores, params),
+  EXPECT_EQ(ss::splitCompositeSegments(sliver, {segment(0, 89), segment(90, 99)}, evidence(chainNeighbours(), creaseAt90, mirrorWithinObject), params),
             0u);
   // Largely overlapping parts are the same object found twice.
   std::vector<ss::CandidateSegment> overlapping = {segment(0, 99)};
-  EXPECT_EQ(ss::splitCompositeSegments(overlapping, {segment(0, 69), segment(40, 99)}, chainNeighbours(), creaseAtSeam,
-                                       mirrorWithinObject, markedScores, params),
+  EXPECT_EQ(ss::splitCompositeSegments(overlapping, {segment(0, 69), segment(40, 99)}, evidence(chainNeighbours(), creaseAtSeam, mirrorWithinObject), params),
             0u);
   EXPECT_EQ(overlapping.size(), 1u);
 }
@@ -116,8 +126,7 @@ TEST(CompositeSegments, PartsMustCoverTheSegmentAndBeSubstantial) {
 TEST(CompositeSegments, PartsThatDoNotTouchAreTwoObjects) {
   // Linked by one link only (five make a seam by default), and that link is not creased.
   std::vector<ss::CandidateSegment> segments = {segment(0, 99)};
-  EXPECT_EQ(ss::splitCompositeSegments(segments, {segment(0, 59), segment(60, 99)}, chainNeighbours(), noCrease,
-                                       mirrorWithinObject, markedScores),
+  EXPECT_EQ(ss::splitCompositeSegments(segments, {segment(0, 59), segment(60, 99)}, evidence(chainNeighbours(), noCrease, mirrorWithinObject), ss::CompositeSegmentParams{}),
             1u);
   EXPECT_EQ(segments.size(), 2u);
 }
@@ -125,8 +134,7 @@ TEST(CompositeSegments, PartsThatDoNotTouchAreTwoObjects) {
 TEST(CompositeSegments, TheRestOfOneObjectFoundAloneIsTheOtherWhenApartOrMetAtCreasesOnly) {
   // Only A (0..59) is found alone; the rest (60..99) is hardly linked to it.
   std::vector<ss::CandidateSegment> segments = {segment(0, 99, 1.0f)};
-  EXPECT_EQ(ss::splitCompositeSegments(segments, {segment(0, 59, 2.0f)}, chainNeighbours(), noCrease,
-                                       mirrorWithinObject, markedScores),
+  EXPECT_EQ(ss::splitCompositeSegments(segments, {segment(0, 59, 2.0f)}, evidence(chainNeighbours(), noCrease, mirrorWithinObject), ss::CompositeSegmentParams{}),
             1u);
   ASSERT_EQ(segments.size(), 2u);
   EXPECT_EQ(segments[0].points, segment(0, 59).points);
@@ -138,8 +146,7 @@ TEST(CompositeSegments, TheRestOfOneObjectFoundAloneIsTheOtherWhenApartOrMetAtCr
   ss::CompositeSegmentParams params;
   params.min_seam_links = 1;
   std::vector<ss::CandidateSegment> creased = {segment(0, 99, 1.0f)};
-  EXPECT_EQ(ss::splitCompositeSegments(creased, {segment(0, 59, 2.0f)}, chainNeighbours(), creaseAtSeam,
-                                       mirrorWithinObject, markedScores, params),
+  EXPECT_EQ(ss::splitCompositeSegments(creased, {segment(0, 59, 2.0f)}, evidence(chainNeighbours(), creaseAtSeam, mirrorWithinObject), params),
             1u);
   // A flat link across the seam as well (a flush face): the rest may be the part's own, kept
   // whole; and even with both parts found alone, a face running on across the seam makes them
@@ -148,12 +155,10 @@ TEST(CompositeSegments, TheRestOfOneObjectFoundAloneIsTheOtherWhenApartOrMetAtCr
   flush[58].push_back(61);
   flush[61].push_back(58);
   std::vector<ss::CandidateSegment> one_body = {segment(0, 99, 1.0f)};
-  EXPECT_EQ(ss::splitCompositeSegments(one_body, {segment(0, 59, 2.0f)}, flush, creaseAtSeam, mirrorWithinObject,
-                                       markedScores, params),
+  EXPECT_EQ(ss::splitCompositeSegments(one_body, {segment(0, 59, 2.0f)}, evidence(flush, creaseAtSeam, mirrorWithinObject), params),
             0u);
   EXPECT_EQ(one_body.size(), 1u);
-  EXPECT_EQ(ss::splitCompositeSegments(one_body, {segment(0, 59, 2.0f), segment(60, 99, 3.0f)}, flush, creaseAtSeam,
-                                       mirrorWithinObject, markedScores, params),
+  EXPECT_EQ(ss::splitCompositeSegments(one_body, {segment(0, 59, 2.0f), segment(60, 99, 3.0f)}, evidence(flush, creaseAtSeam, mirrorWithinObject), params),
             0u);
 }
 
@@ -178,16 +183,16 @@ TEST(CompositeSegments, PartsJoinedWithoutACreaseThroughTheRestStayOneObject) {
   params.min_seam_links = 1;
 
   std::vector<ss::CandidateSegment> segments = {whole};
-  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, neighbours, creaseAtSeam, mirrorWithinObject, markedScores, params), 0u);
+  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, evidence(neighbours, creaseAtSeam, mirrorWithinObject), params), 0u);
   ASSERT_EQ(segments.size(), 1u);
   EXPECT_EQ(segments[0].points.size(), 110u);
 
   // The corner meets B at a crease too: every path from A to B crosses one.
-  const ss::CreaseTest creases = [](int a, int b) {
+  const auto creases = [](int a, int b) {
     return creaseAtSeam(a, b) || (std::min(a, b) == 65 && std::max(a, b) == kPoints + 9);
   };
   segments = {whole};
-  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, neighbours, creases, mirrorWithinObject, markedScores, params), 1u);
+  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, evidence(neighbours, creases, mirrorWithinObject), params), 1u);
   ASSERT_EQ(segments.size(), 2u);
   EXPECT_EQ(segments[0].points, segment(0, 59).points);
   EXPECT_EQ(segments[1].points, segment(60, 99).points);

@@ -21,9 +21,9 @@ TEST(Config, DefaultFileMatchesBuiltInDefaults) {
   EXPECT_EQ(from_file.euclidean.min_cluster_size, built_in.euclidean.min_cluster_size);
   EXPECT_EQ(from_file.symmetry.cut.dmax, built_in.symmetry.cut.dmax);
   EXPECT_EQ(from_file.symmetry.cut.sigma_concave_deg, built_in.symmetry.cut.sigma_concave_deg);
-  EXPECT_EQ(from_file.symmetry.detection.max_tangent_angle_deg, built_in.symmetry.detection.max_tangent_angle_deg);
+  EXPECT_EQ(from_file.symmetry.curve_pairs.max_tangent_angle_deg, built_in.symmetry.curve_pairs.max_tangent_angle_deg);
   EXPECT_EQ(from_file.symmetry.filter.s_occl, built_in.symmetry.filter.s_occl);
-  EXPECT_EQ(from_file.symmetry.refinement.icp_iterations, built_in.symmetry.refinement.icp_iterations);
+  EXPECT_EQ(from_file.symmetry.refine.icp_iterations, built_in.symmetry.refine.icp_iterations);
 }
 
 TEST(Config, PresetsSetTheFilterThresholds) {

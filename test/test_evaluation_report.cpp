@@ -1,11 +1,14 @@
 // Pooling per kind and overall, the CSV rows, the printed table, and --sweep parsing.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "symmetry_segmentation/errors.h"
+#include "symmetry_segmentation/evaluation/ablation.h"
 #include "symmetry_segmentation/evaluation/evaluation_csv.h"
 #include "symmetry_segmentation/evaluation/evaluation_summary.h"
 #include "symmetry_segmentation/evaluation/evaluation_table.h"
@@ -164,4 +167,48 @@ TEST(ParameterSweep, MalformedSweepsAreInputErrors) {
                            ".x=1", "lccp.=1", "=1"}) {
     EXPECT_THROW(ss::parseSweep(text), ss::InputError) << text;
   }
+}
+
+TEST(Ablation, EveryStageTheListCanRunWithoutIsLeftOutOnce) {
+  const ss::SymmetryParams params;
+  const auto variants = ss::ablationVariants(params.stages);
+  ASSERT_FALSE(variants.empty());
+  EXPECT_TRUE(variants[0].removed.empty());
+  EXPECT_EQ(variants[0].stages, params.stages);
+  std::set<std::string> removed;
+  for (std::size_t v = 1; v < variants.size(); ++v) {
+    EXPECT_TRUE(removed.insert(variants[v].removed).second) << variants[v].removed << " twice";
+    EXPECT_EQ(std::count(variants[v].stages.begin(), variants[v].stages.end(), variants[v].removed), 0);
+    EXPECT_TRUE(ss::stageListProblems(variants[v].stages).empty()) << variants[v].removed;
+  }
+  // Both runs of cut and refine go together; what the rest needs is never left out.
+  for (const char* required : {"curves", "cut", "islands", "filter"}) EXPECT_EQ(removed.count(required), 0u) << required;
+  for (const char* optional : {"refine", "upright", "footprints", "color_seams", "dedup", "object_bottoms"}) {
+    EXPECT_EQ(removed.count(optional), 1u) << optional;
+  }
+}
+
+TEST(Ablation, TheTableShowsTheChangeAgainstTheFullListAndEachStagesTime) {
+  ss::DataSetAblation ablation;
+  ablation.name = "boxes";
+  ablation.scenes = 2;
+  ablation.variants = ss::ablationVariants({"curves", "curve_pairs", "cut", "filter", "dedup"});
+  ASSERT_EQ(ablation.variants.size(), 2u) << "only dedup can go";
+  ablation.totals.resize(2);
+  ablation.totals[0].counts = ss::MatchCounts{4, 4, 4, 4, 4.0};   // P = R = 1
+  ablation.totals[0].segments = 4;
+  ablation.totals[1].counts = ss::MatchCounts{8, 4, 4, 4, 4.0};   // P 0.5, R 1, F 0.667
+  ablation.totals[1].segments = 8;
+  ss::addStageTimes(ablation, ablation.variants[0].stages,
+                    {{"preprocess", 5.0}, {"curves", 10.0}, {"cut", 30.0}, {"dedup", 1.0}, {"total", 50.0}});
+  ss::addStageTimes(ablation, ablation.variants[0].stages,
+                    {{"preprocess", 5.0}, {"curves", 20.0}, {"cut", 10.0}, {"cut#2", 40.0}, {"dedup", 3.0}, {"total", 90.0}});
+  std::ostringstream out;
+  ss::printAblationTable(ablation, 0.9, out);
+  const std::string table = out.str();
+  EXPECT_NE(table.find("Ablation on boxes (2 scenes, 4 objects)"), std::string::npos) << table;
+  EXPECT_NE(table.find("| full list | 1.000 | 1.000 | 1.000 |  | 4 | 70.0 (total) |"), std::string::npos) << table;
+  EXPECT_NE(table.find("| without dedup | 0.500 | 1.000 | 0.667 | -0.333 | 8 | 2.0 |"), std::string::npos) << table;
+  // cut's two runs in the second scene add up: median of 30 and 50.
+  EXPECT_NE(table.find("| without cut | (required) | | | | | 40.0 |"), std::string::npos) << table;
 }

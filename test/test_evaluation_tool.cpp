@@ -147,6 +147,33 @@ TEST(EvaluateSegmentationTool, EuclideanFindsBothSeparatedBoxes) {
   EXPECT_NE(rows.find({"euclidean", "", "boxes", "0.9"}), rows.end()) << readTextFile(csv);
 }
 
+TEST(EvaluateSegmentationTool, AblateRunsTheSymmetryMethodWithoutEachStage) {
+  const std::string dir = makeTempDir("eval_tool_ablate");
+  writeScene(dir + "/scenes/boxes_1", twoBoxesOnTable(), "boxes");
+  writeTextFile(dir + "/scenes/boxes_1/table_plane.txt", "0 0 1 0\n");
+  // A scene without labels (a real scan, say) is a data set of its own: segment counts only.
+  writeScene(dir + "/unlabelled", twoBoxesOnTable(), "");
+  writeTextFile(dir + "/unlabelled/table_plane.txt", "0 0 1 0\n");
+  fs::remove(dir + "/unlabelled/labels.txt");
+
+  const auto result = runCommand(tool() + " " + dir + "/scenes " + dir + "/unlabelled --ablate");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("Ablation on scenes (1 scene, 2 objects)"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("Ablation on unlabelled (1 scene)"), std::string::npos) << result.output;
+  std::size_t rows = 0, required = 0;
+  for (const std::string& row : lines(result.output)) {
+    if (row.rfind("| without ", 0) != 0) continue;
+    ++rows;
+    if (row.find("(required)") != std::string::npos) ++required;
+  }
+  EXPECT_EQ(rows, 2u * 16u) << "a row per stage of the default list, per data set";
+  EXPECT_EQ(required, 2u * 4u) << "curves, cut, islands, filter";
+
+  const auto lccp = runCommand(tool() + " " + dir + "/scenes --ablate --method lccp");
+  EXPECT_EQ(lccp.exit_code, 2);
+  EXPECT_NE(lccp.output.find("symmetry method only"), std::string::npos) << lccp.output;
+}
+
 TEST(EvaluateSegmentationTool, SweepWritesOneRowPerValueAndAPlot) {
   const std::string dir = makeTempDir("eval_tool_sweep");
   writeScene(dir + "/boxes", twoBoxesOnTable(), "");

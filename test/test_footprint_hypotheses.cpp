@@ -1,4 +1,4 @@
-// Stage 2c: an island no cut reached gets the vertical planes along its footprint's axes,
+// Stage footprints: an island no cut reached gets the vertical planes along its footprint's axes,
 // through the middle of its extent; groups of several objects and covered islands get none.
 #include <gtest/gtest.h>
 
@@ -33,7 +33,7 @@ TEST(FootprintHypotheses, AnLShapeGetsItsSymmetryPlaneThroughTheMiddleOfItsWidth
       cloud.push_back(cloud[i]);
     }
   }
-  const auto hypotheses = ss::footprintHypotheses(cloud, all(cloud), Eigen::Vector3f::UnitZ());
+  const auto hypotheses = ss::footprintHypotheses(cloud, all(cloud), Eigen::Vector3f::UnitZ(), 0.3f);
   ASSERT_EQ(hypotheses.size(), 2u);
   // The longer axis first: the plane across the length (no symmetry of an L, but a guess).
   EXPECT_GT(std::fabs(hypotheses[0].plane.normal.x()), 0.99f);
@@ -50,9 +50,9 @@ TEST(FootprintHypotheses, AnLShapeGetsItsSymmetryPlaneThroughTheMiddleOfItsWidth
 TEST(FootprintHypotheses, GroupsLongerThanAnObjectGetNone) {
   ss::Cloud cloud;
   test_clouds::addBox(cloud, {-0.25f, -0.04f, 0.0f}, {0.5f, 0.08f, 0.1f}, 0.01f);
-  EXPECT_TRUE(ss::footprintHypotheses(cloud, all(cloud), Eigen::Vector3f::UnitZ()).empty());
+  EXPECT_TRUE(ss::footprintHypotheses(cloud, all(cloud), Eigen::Vector3f::UnitZ(), 0.3f).empty());
   EXPECT_EQ(ss::footprintHypotheses(cloud, all(cloud), Eigen::Vector3f::UnitZ(), 0.6f).size(), 2u);
-  EXPECT_TRUE(ss::footprintHypotheses(cloud, {0, 1}, Eigen::Vector3f::UnitZ()).empty());
+  EXPECT_TRUE(ss::footprintHypotheses(cloud, {0, 1}, Eigen::Vector3f::UnitZ(), 0.3f).empty());
 }
 
 TEST(FootprintHypotheses, OnlyIslandsNoSegmentCovered) {

@@ -457,10 +457,11 @@ TEST(InputHardening, ConfigurationValuesMustBeInRange) {
       {"euclidean.max_cluster_size", "10"},       {"euclidean.cluster_tolerance", ".inf"},
       {"lccp.concavity_tolerance", "-5"},         {"lccp.normal_importance", ".nan"},
       {"symmetry.filter.s_occl", "1.5"},          {"symmetry.filter.s_smooth", "-0.1"},
-      {"symmetry.filter.duplicate_overlap", "2"}, {"symmetry.filter.min_segment_points", "0"},
-      {"symmetry.detection.max_hypotheses", "0"}, {"symmetry.detection.max_tangent_angle_deg", "0"},
-      {"symmetry.detection.merge_normal_angle_deg", "200"}, {"symmetry.refinement.icp_iterations", "-1"},
-      {"symmetry.detection.boundary_radius", "0"}, {"symmetry.cut.lambda_sym", ".nan"},
+      {"symmetry.dedup.max_overlap", "2"},       {"symmetry.filter.min_segment_points", "0"},
+      {"symmetry.curve_pairs.max_hypotheses", "0"}, {"symmetry.curve_pairs.max_tangent_angle_deg", "0"},
+      {"symmetry.curves.merge_normal_angle_deg", "200"}, {"symmetry.refine.icp_iterations", "-1"},
+      {"symmetry.curves.boundary_radius", "0"}, {"symmetry.cut.lambda_sym", ".nan"},
+      {"symmetry.stages", "[curves, cut, filter]"}, {"symmetry.stages", "[curve_pairs, cut, filter]"},
   };
   for (const auto& [key, value] : cases) {
     ss::SegmentationConfig config;
@@ -472,9 +473,9 @@ TEST(InputHardening, ConfigurationValuesMustBeInRange) {
     }
   }
   ss::SegmentationConfig config;
-  ss::setConfigValue(config, "symmetry.refinement.icp_iterations", "0");  // no refinement is fine
+  ss::setConfigValue(config, "symmetry.refine.icp_iterations", "0");  // no refinement is fine
   ss::setConfigValue(config, "preprocessing.table_margin", "0");
-  EXPECT_EQ(config.symmetry.refinement.icp_iterations, 0);
+  EXPECT_EQ(config.symmetry.refine.icp_iterations, 0);
 }
 
 // ---- Pipeline guards ---------------------------------------------------------------------------

@@ -1,9 +1,12 @@
-// Stage 5a: islands (points apart from all others) that one found plane explains whole.
+// Stages islands and island_segments: islands (points apart from all others), and those one
+// found plane explains whole.
 #include <gtest/gtest.h>
 
 #include <numeric>
 
+#include "fake_evidence.h"
 #include "symmetry_segmentation/symmetry/island_segments.h"
+#include "symmetry_segmentation/symmetry/islands.h"
 
 namespace ss = symmetry_segmentation;
 
@@ -49,6 +52,13 @@ ss::SegmentScores scoreByPlane(const std::vector<int>& points, const ss::Symmetr
   return scores;
 }
 
+/// Evidence over the two rows that scores by plane (scoreByPlane).
+test_support::FakeEvidence scoredByPlane() {
+  test_support::FakeEvidence evidence(*twoRows());
+  evidence.score = scoreByPlane;
+  return evidence;
+}
+
 ss::SymmetryFilterParams filter() {
   ss::SymmetryFilterParams params;
   params.s_occl = 0.9f;
@@ -75,7 +85,7 @@ TEST(IslandSegments, AnIslandIsProposedWithThePlaneThatExplainsItWhole) {
   // that explains the whole island; nothing lies on the second island.
   const std::vector<ss::CandidateSegment> segments = {segmentWithPlane(range(0, 5), 2.0f),
                                                       segmentWithPlane(range(4, 9), 1.0f)};
-  const auto proposed = ss::explainedIslands(islands, segments, scoreByPlane, filter());
+  const auto proposed = ss::explainedIslands(islands, segments, scoredByPlane(), filter(), {});
   ASSERT_EQ(proposed.size(), 1u);
   EXPECT_EQ(proposed[0].points, range(0, 9));
   EXPECT_EQ(proposed[0].plane.distance, 1.0f);
@@ -88,5 +98,5 @@ TEST(IslandSegments, AnIslandNoPlaneExplainsIsNotProposed) {
   // (its plane would explain anything) does not lend its plane.
   const std::vector<ss::CandidateSegment> segments = {segmentWithPlane(range(0, 5), 2.0f),
                                                       segmentWithPlane(range(8, 14), 1.0f)};
-  EXPECT_TRUE(ss::explainedIslands(islands, segments, scoreByPlane, filter()).empty());
+  EXPECT_TRUE(ss::explainedIslands(islands, segments, scoredByPlane(), filter(), {}).empty());
 }

@@ -1,9 +1,10 @@
-// Stage 5b': a segment of two like objects mirrored onto each other is split when the sensor saw
+// Stage mirror_twins: a segment of two like objects mirrored onto each other is split when the sensor saw
 // through the space between them, and stays whole when it did not (one object seen in pieces).
 #include <gtest/gtest.h>
 
 #include <numeric>
 
+#include "fake_evidence.h"
 #include "symmetry_segmentation/symmetry/mirror_twins.h"
 
 namespace ss = symmetry_segmentation;
@@ -51,13 +52,22 @@ ss::SegmentScores unitScores(const std::vector<int>&, const ss::SymmetryPlane&) 
   return scores;
 }
 
+test_support::FakeEvidence evidence(std::vector<std::vector<int>> links, int (*lands_on)(int, const ss::SymmetryPlane&),
+                                    bool (*free)(const Eigen::Vector3f&)) {
+  test_support::FakeEvidence result(twoPieces(), std::move(links));
+  result.lands_on = lands_on;
+  result.free = free;
+  result.score = unitScores;
+  return result;
+}
+
 }  // namespace
 
 TEST(MirrorTwins, PiecesMirroredAcrossObservedFreeSpaceAreTwoObjects) {
   std::vector<ss::CandidateSegment> segments = {wholeSegment()};
   ss::MirrorTwinParams params;
   params.min_pairs = 5;
-  EXPECT_EQ(ss::splitMirrorTwins(segments, twoPieces(), chains(), acrossThePlane, seenThrough, unitScores, params), 1u);
+  EXPECT_EQ(ss::splitMirrorTwins(segments, evidence(chains(), acrossThePlane, seenThrough), params), 1u);
   ASSERT_EQ(segments.size(), 2u);
   EXPECT_EQ(segments[0].points, std::vector<int>({0, 1, 2, 3, 4, 5, 6, 7, 8, 9}));
   EXPECT_EQ(segments[1].points, std::vector<int>({10, 11, 12, 13, 14, 15, 16, 17, 18, 19}));
@@ -69,17 +79,17 @@ TEST(MirrorTwins, PiecesOfOneObjectSeenAroundSomethingStayWhole) {
   std::vector<ss::CandidateSegment> segments = {wholeSegment()};
   ss::MirrorTwinParams params;
   params.min_pairs = 5;
-  EXPECT_EQ(ss::splitMirrorTwins(segments, twoPieces(), chains(), acrossThePlane, hidden, unitScores, params), 0u);
+  EXPECT_EQ(ss::splitMirrorTwins(segments, evidence(chains(), acrossThePlane, hidden), params), 0u);
   EXPECT_EQ(segments.size(), 1u);
   // Each piece mirrored onto itself (a handle apart from its mug's body): no pair across.
-  EXPECT_EQ(ss::splitMirrorTwins(segments, twoPieces(), chains(), withinEachPiece, seenThrough, unitScores, params), 0u);
+  EXPECT_EQ(ss::splitMirrorTwins(segments, evidence(chains(), withinEachPiece, seenThrough), params), 0u);
   // One connected piece: nothing to split.
   auto linked = chains();
   linked[9].push_back(10);
   linked[10].push_back(9);
-  EXPECT_EQ(ss::splitMirrorTwins(segments, twoPieces(), linked, acrossThePlane, seenThrough, unitScores, params), 0u);
+  EXPECT_EQ(ss::splitMirrorTwins(segments, evidence(linked, acrossThePlane, seenThrough), params), 0u);
   // Too few pairs across to decide.
   params.min_pairs = 50;
-  EXPECT_EQ(ss::splitMirrorTwins(segments, twoPieces(), chains(), acrossThePlane, seenThrough, unitScores, params), 0u);
+  EXPECT_EQ(ss::splitMirrorTwins(segments, evidence(chains(), acrossThePlane, seenThrough), params), 0u);
   EXPECT_EQ(segments.size(), 1u);
 }

@@ -46,7 +46,7 @@ TEST(ObjectBottoms, TheStripWithinTheTableMarginRejoinsItsObject) {
   const std::vector<int> whole = box.boxPoints();
   ASSERT_LT(kept, whole.size()) << "the margin must have taken some of the box";
 
-  EXPECT_EQ(ss::restoreObjectBottoms(box.scene, prepared, box.params, segments), whole.size() - kept);
+  EXPECT_EQ(ss::restoreObjectBottoms(box.scene, prepared, box.params.voxel_size, segments, {}), whole.size() - kept);
   EXPECT_EQ(segments[0].indices, whole) << "every box point and no table point";
 }
 
@@ -62,16 +62,12 @@ TEST(ObjectBottoms, TheTableStaysOut) {
   const ss::PreprocessedScene prepared = ss::preprocess(box.scene, box.params);
   std::vector<ss::Segment> segments(1);
   segments[0].indices = box.boxPoints(&prepared);
-  ss::restoreObjectBottoms(box.scene, prepared, box.params, segments);
+  ss::restoreObjectBottoms(box.scene, prepared, box.params.voxel_size, segments, {});
   EXPECT_EQ(segments[0].indices, box.boxPoints());
 
-  // Switched off, or without the input's own normals (nothing tells sides from table): nothing
-  // is added.
-  box.params.restore_object_bottoms = false;
+  // Without the input's own normals nothing tells sides from table: nothing is added.
   segments[0].indices = box.boxPoints(&prepared);
-  EXPECT_EQ(ss::restoreObjectBottoms(box.scene, prepared, box.params, segments), 0u);
-  box.params.restore_object_bottoms = true;
   box.scene.has_normals = false;
-  EXPECT_EQ(ss::restoreObjectBottoms(box.scene, prepared, box.params, segments), 0u);
+  EXPECT_EQ(ss::restoreObjectBottoms(box.scene, prepared, box.params.voxel_size, segments, {}), 0u);
   EXPECT_EQ(segments[0].indices, box.boxPoints(&prepared));
 }

@@ -1,4 +1,4 @@
-// Stage 3 (graph cut for one symmetry plane) and the stage-5 scores, on hand-built boxes with
+// Stage cut (graph cut for one symmetry plane) and the segment scores, on hand-built boxes with
 // known symmetry planes and on a generated scene with its true object planes.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Stage 1 of the symmetry method on boxes and cylinders: merged segments, boundary points on
+// Stage curves of the symmetry method on boxes and cylinders: merged segments, boundary points on
 // the edges only, and curves whose tangents follow the edges.
 #include <gtest/gtest.h>
 
@@ -78,7 +78,7 @@ ss::Cloud cylinderCloud(float radius, float height, float spacing) {
 
 TEST(MergedSegments, FlatFacesAreWholeAndDistinct) {
   const ss::Cloud cloud = boxCloud(0.01f);
-  const ss::SymmetryDetectionParams params;
+  const ss::NormalEdgeCurveParams params;
   const auto labels = ss::mergedSegmentLabels(cloud, params);
   ASSERT_EQ(labels.size(), cloud.size());
   // Points well inside each face (away from the edges, where supervoxels may straddle).
@@ -104,7 +104,7 @@ TEST(MergedSegments, SmoothCylinderSideIsOneSegment) {
   // Mean normals of neighbouring 3 cm supervoxels on this side differ by ~17 degrees, more than
   // merge_normal_angle_deg: only their smooth contact merges them.
   const ss::Cloud cloud = cylinderCloud(0.10f, 0.14f, 0.01f);
-  const auto labels = ss::mergedSegmentLabels(cloud, ss::SymmetryDetectionParams{});
+  const auto labels = ss::mergedSegmentLabels(cloud, ss::NormalEdgeCurveParams{});
   std::set<int> side, top;
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     const auto& p = cloud.points[i];
@@ -119,7 +119,7 @@ TEST(MergedSegments, SmoothCylinderSideIsOneSegment) {
 TEST(BoundaryPoints, LieOnTheBoxEdgesOnly) {
   for (float spacing : {0.01f, 0.005f}) {
     const ss::Cloud cloud = boxCloud(spacing);
-    const ss::SymmetryDetectionParams params;
+    const ss::NormalEdgeCurveParams params;
     const auto labels = ss::mergedSegmentLabels(cloud, params);
     const auto boundary = ss::boundaryPoints(cloud, labels, params);
     ASSERT_FALSE(boundary.empty());
@@ -149,7 +149,7 @@ TEST(BoundaryPoints, LieOnTheBoxEdgesOnly) {
 TEST(NormalEdgeCurves, FollowTheBoxEdges) {
   for (float spacing : {0.01f, 0.005f}) {
     const ss::Cloud cloud = boxCloud(spacing);
-    const ss::SymmetryDetectionParams params;
+    const ss::NormalEdgeCurveParams params;
     const auto curves = ss::extractNormalEdgeCurves(cloud, params);
     ASSERT_FALSE(curves.empty());
     const auto edges = boxEdges(kBoxSize);
@@ -185,7 +185,7 @@ TEST(NormalEdgeCurves, FollowTheBoxEdges) {
 
 TEST(NormalEdgeCurves, DeterministicAndEmptySafe) {
   const ss::Cloud cloud = boxCloud(0.01f);
-  const ss::SymmetryDetectionParams params;
+  const ss::NormalEdgeCurveParams params;
   const auto first = ss::extractNormalEdgeCurves(cloud, params);
   const auto second = ss::extractNormalEdgeCurves(cloud, params);
   ASSERT_EQ(first.size(), second.size());

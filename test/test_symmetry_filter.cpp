@@ -3,6 +3,7 @@
 #include <atomic>
 
 #include "symmetry_segmentation/parallel_for.h"
+#include "symmetry_segmentation/symmetry/duplicate_segments.h"
 #include "symmetry_segmentation/symmetry/segment_filter.h"
 
 namespace ss = symmetry_segmentation;
@@ -36,8 +37,8 @@ TEST(SegmentFilter, OverlapOfSmaller) {
 }
 
 TEST(SegmentFilter, DuplicatesKeepTheCleanestBoundary) {
-  ss::SymmetryFilterParams params;
-  params.duplicate_overlap = 0.7f;
+  ss::DuplicateParams params;
+  params.max_overlap = 0.7f;
   const auto kept = ss::removeDuplicates(
       {candidate(0, 100, 1.0f, 0.010f),    // object A
        candidate(5, 100, 1.0f, 0.005f),    // object A again, cleaner boundary: wins

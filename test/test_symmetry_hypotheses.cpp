@@ -1,4 +1,4 @@
-// Stage 2 of the symmetry method: curve matching, plane mean shift and the hypotheses of
+// Stage curve_pairs of the symmetry method: curve matching, plane mean shift and the hypotheses of
 // boxes and cylinders.
 #include <gtest/gtest.h>
 
@@ -120,7 +120,7 @@ TEST(CurveMatching, MirrorImageCurvesGiveTheMirrorPlane) {
   const ss::SymmetryPlane mirror = makePlane({0.9f, 0.3f, 0.2f}, {0.0f, 0.05f, 0.05f});
   ss::Cloud cloud;
   const auto [a, b] = mirroredCurves(cloud, mirror);
-  const ss::SymmetryDetectionParams params;
+  const ss::CurvePairParams params;
   const auto planes = ss::matchCurvePair(cloud, a, b, params);
   EXPECT_GE(planes.size(), 20u);
   for (const auto& sample : planes) {
@@ -133,7 +133,7 @@ TEST(CurveMatching, OneToOneAndTangentGated) {
   const ss::SymmetryPlane mirror = makePlane({1.0f, 0.0f, 0.0f}, Eigen::Vector3f::Zero());
   ss::Cloud cloud;
   auto [a, b] = mirroredCurves(cloud, mirror);
-  const ss::SymmetryDetectionParams params;
+  const ss::CurvePairParams params;
   EXPECT_LE(ss::matchCurvePair(cloud, a, b, params).size(), a.points.size());
   // Turning each of b's tangents by 20 degrees breaks every mirror match.
   for (auto& t : b.tangents) t = Eigen::AngleAxisf(20.0f * kRad, t.cross(mirror.normal).normalized()) * t;
@@ -152,7 +152,7 @@ TEST(CurveMatching, SymmetricCurveMatchesItself) {
     curve.tangents.push_back(Eigen::Vector3f(1.0f, 0.0f, 2.0f * 4.0f * x).normalized());
     cloud.push_back(point({0.05f + x, 0.1f, 0.1f + 4.0f * x * x}, Eigen::Vector3f::UnitY()));
   }
-  const auto planes = ss::matchCurvePair(cloud, curve, curve, ss::SymmetryDetectionParams{});
+  const auto planes = ss::matchCurvePair(cloud, curve, curve, ss::CurvePairParams{});
   const ss::SymmetryPlane mirror = makePlane(Eigen::Vector3f::UnitX(), {0.05f, 0.0f, 0.0f});
   EXPECT_GE(planes.size(), 10u);
   EXPECT_LE(planes.size(), 12u) << "(i, j) and (j, i) are one match";
@@ -209,10 +209,10 @@ TEST(PlaneMeanShift, PlanesThroughTheOriginAcrossTheSignFlip) {
 TEST(SymmetryHypotheses, RotatedBoxHasBothVerticalPlanes) {
   const float yaw = 25.0f * kRad;
   const Eigen::Vector3f centre(0.3f, -0.2f, 0.0f);
-  const ss::SymmetryDetectionParams params;
+  const ss::CurvePairParams params;
   for (float spacing : {0.005f, 0.01f}) {
     const ss::Cloud cloud = rotatedBox({0.12f, 0.08f, 0.10f}, spacing, yaw, centre);
-    const auto curves = ss::extractNormalEdgeCurves(cloud, params);
+    const auto curves = ss::extractNormalEdgeCurves(cloud, ss::NormalEdgeCurveParams{});
     const auto hypotheses = ss::detectSymmetryHypotheses(cloud, curves, params);
     ASSERT_FALSE(hypotheses.empty());
     EXPECT_LE(static_cast<int>(hypotheses.size()), params.max_hypotheses);
@@ -230,8 +230,8 @@ TEST(SymmetryHypotheses, RotatedBoxHasBothVerticalPlanes) {
 TEST(SymmetryHypotheses, CylinderHasAVerticalPlaneThroughItsAxis) {
   const Eigen::Vector3f base(-0.1f, 0.2f, 0.0f);
   const ss::Cloud cloud = cylinder(base, 0.04f, 0.12f, 0.005f);
-  const ss::SymmetryDetectionParams params;
-  const auto hypotheses = ss::detectSymmetryHypotheses(cloud, ss::extractNormalEdgeCurves(cloud, params), params);
+  const ss::CurvePairParams params;
+  const auto hypotheses = ss::detectSymmetryHypotheses(cloud, ss::extractNormalEdgeCurves(cloud, ss::NormalEdgeCurveParams{}), params);
   const bool found = std::any_of(hypotheses.begin(), hypotheses.end(), [&](const ss::SymmetryHypothesis& h) {
     return std::fabs(h.plane.normal.z()) < std::sin(3.0f * kRad) && std::fabs(ss::signedDistance(h.plane, base)) < 0.01f;
   });
@@ -240,8 +240,8 @@ TEST(SymmetryHypotheses, CylinderHasAVerticalPlaneThroughItsAxis) {
 
 TEST(SymmetryHypotheses, DeterministicAndEmptySafe) {
   const ss::Cloud cloud = rotatedBox({0.12f, 0.08f, 0.10f}, 0.01f, 0.3f, Eigen::Vector3f::Zero());
-  const ss::SymmetryDetectionParams params;
-  const auto curves = ss::extractNormalEdgeCurves(cloud, params);
+  const ss::CurvePairParams params;
+  const auto curves = ss::extractNormalEdgeCurves(cloud, ss::NormalEdgeCurveParams{});
   const auto first = ss::detectSymmetryHypotheses(cloud, curves, params);
   const auto second = ss::detectSymmetryHypotheses(cloud, curves, params);
   ASSERT_EQ(first.size(), second.size());

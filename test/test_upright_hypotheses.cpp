@@ -1,4 +1,4 @@
-// Stage 2b of the symmetry method: vertical planes proposed from single surfaces.
+// Stage upright of the symmetry method: vertical planes proposed from single surfaces.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -6,6 +6,7 @@
 
 #include "symmetry_segmentation/symmetry/symmetry_plane.h"
 #include "symmetry_segmentation/symmetry/upright_hypotheses.h"
+#include "fake_evidence.h"
 #include "test_clouds.h"
 
 namespace ss = symmetry_segmentation;
@@ -13,6 +14,13 @@ namespace ss = symmetry_segmentation;
 namespace {
 
 const Eigen::Vector3f kUp = Eigen::Vector3f::UnitZ();
+
+/// Evidence without a map: a reflection within 1 cm of a point lands on it, else nothing is known.
+test_support::FakeEvidence landing(const ss::Cloud& cloud) {
+  test_support::FakeEvidence evidence(cloud);
+  evidence.landOnNearestWithin(0.01f);
+  return evidence;
+}
 
 ss::PointT point(const Eigen::Vector3f& p, const Eigen::Vector3f& n) {
   ss::PointT q;
@@ -63,7 +71,7 @@ TEST(UprightHypotheses, CylinderStripsProposeThePlaneBisectingWhatWasSeen) {
   const float half = 100.0f * static_cast<float>(M_PI) / 180.0f;
   addCylinderSide(cloud, labels, axis, 0.04f, 0.15f, centre - half, centre + half, 2, 1);
 
-  const auto hypotheses = ss::uprightHypotheses(cloud, labels, kUp, ss::UprightHypothesisParams{}, ss::landingScore(cloud));
+  const auto hypotheses = ss::uprightHypotheses(landing(cloud), labels, kUp, ss::UprightHypothesisParams{});
   ASSERT_FALSE(hypotheses.empty());
   bool through_axis = false;
   for (const auto& h : hypotheses) {
@@ -85,7 +93,7 @@ TEST(UprightHypotheses, TwoTouchingCansMergedIntoOneSurfaceProposeAPlaneThroughE
   const float pi = static_cast<float>(M_PI);
   addCylinderSide(cloud, labels, left, 0.04f, 0.12f, -pi, 0.0f, 1, 1);     // the front halves,
   addCylinderSide(cloud, labels, right, 0.05f, 0.12f, -pi, 0.0f, 1, 1);    // seen from -y
-  const auto hypotheses = ss::uprightHypotheses(cloud, labels, kUp, ss::UprightHypothesisParams{}, ss::landingScore(cloud));
+  const auto hypotheses = ss::uprightHypotheses(landing(cloud), labels, kUp, ss::UprightHypothesisParams{});
   for (const Eigen::Vector3f& axis : {left, right}) {
     const auto through = std::find_if(hypotheses.begin(), hypotheses.end(), [&](const ss::SymmetryHypothesis& h) {
       return distanceToPlane(h.plane, axis) < 0.004f && !h.anchor.empty();
@@ -119,7 +127,7 @@ TEST(UprightHypotheses, BoxFacesProposeTheirBisectors) {
     }
     labels.push_back(label);
   }
-  const auto hypotheses = ss::uprightHypotheses(cloud, labels, kUp, ss::UprightHypothesisParams{}, ss::landingScore(cloud));
+  const auto hypotheses = ss::uprightHypotheses(landing(cloud), labels, kUp, ss::UprightHypothesisParams{});
   const Eigen::Vector3f centre(0.16f, 0.24f, 0.05f);
   EXPECT_TRUE(hasPlane(hypotheses, Eigen::Vector3f::UnitX(), centre, 2.0f, 0.005f));
   EXPECT_TRUE(hasPlane(hypotheses, Eigen::Vector3f::UnitY(), centre, 2.0f, 0.005f));
@@ -131,12 +139,12 @@ TEST(UprightHypotheses, SmallSurfacesAndUnlabelledPointsProposeNothing) {
   std::vector<int> labels;
   addCylinderSide(cloud, labels, Eigen::Vector3f::Zero(), 0.04f, 0.15f, 0.0f, 3.0f, 1, 1);
   std::vector<int> unlabelled(labels.size(), 0);
-  EXPECT_TRUE(ss::uprightHypotheses(cloud, unlabelled, kUp, ss::UprightHypothesisParams{}, ss::landingScore(cloud)).empty());
+  EXPECT_TRUE(ss::uprightHypotheses(landing(cloud), unlabelled, kUp, ss::UprightHypothesisParams{}).empty());
   ss::UprightHypothesisParams strict;
   strict.min_surface_points = static_cast<int>(cloud.size()) + 1;
-  EXPECT_TRUE(ss::uprightHypotheses(cloud, labels, kUp, strict, ss::landingScore(cloud)).empty());
+  EXPECT_TRUE(ss::uprightHypotheses(landing(cloud), labels, kUp, strict).empty());
   const ss::Cloud empty;
-  EXPECT_TRUE(ss::uprightHypotheses(empty, {}, kUp, ss::UprightHypothesisParams{}, ss::landingScore(empty)).empty());
+  EXPECT_TRUE(ss::uprightHypotheses(landing(empty), {}, kUp, ss::UprightHypothesisParams{}).empty());
 }
 
 TEST(UprightHypotheses, ASurfaceWhoseNormalsMeetNoCommonAxisProposesNoAxisPlane) {
@@ -154,7 +162,7 @@ TEST(UprightHypotheses, ASurfaceWhoseNormalsMeetNoCommonAxisProposesNoAxisPlane)
   }
   ss::UprightHypothesisParams params;
   params.flat_curvature = 0.0f;  // only the axis test may propose
-  EXPECT_TRUE(ss::uprightHypotheses(cloud, labels, kUp, params, ss::landingScore(cloud)).empty());
+  EXPECT_TRUE(ss::uprightHypotheses(landing(cloud), labels, kUp, params).empty());
 }
 
 TEST(UprightHypotheses, AppendDistinctSkipsNearEqualPlanes) {

@@ -8,25 +8,27 @@ namespace symmetry_segmentation {
 
 class EuclideanSegmenter : public Segmenter {
  public:
-  EuclideanSegmenter(const PreprocessParams& preprocessing, const EuclideanParams& params)
-      : preprocessing_(preprocessing), params_(params) {}
+  explicit EuclideanSegmenter(const SegmentationConfig& config)
+      : preprocessing_(config.preprocessing), bottoms_(config.object_bottoms), params_(config.euclidean) {}
   std::string name() const override { return "euclidean"; }
   SegmentationResult segment(const Scene& scene) const override;
 
  private:
   PreprocessParams preprocessing_;
+  ObjectBottomParams bottoms_;
   EuclideanParams params_;
 };
 
 class LccpSegmenter : public Segmenter {
  public:
-  LccpSegmenter(const PreprocessParams& preprocessing, const LccpParams& params)
-      : preprocessing_(preprocessing), params_(params) {}
+  explicit LccpSegmenter(const SegmentationConfig& config)
+      : preprocessing_(config.preprocessing), bottoms_(config.object_bottoms), params_(config.lccp) {}
   std::string name() const override { return "lccp"; }
   SegmentationResult segment(const Scene& scene) const override;
 
  private:
   PreprocessParams preprocessing_;
+  ObjectBottomParams bottoms_;
   LccpParams params_;
 };
 

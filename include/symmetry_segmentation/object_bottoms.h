@@ -5,9 +5,11 @@
 // mm) so that no method mistakes the table for an object; with it goes the strip of each
 // object's sides just above the table - 5-15 % of a small box, enough to push a correct segment
 // under IoU 0.9. The input's own normals tell the two apart: the table faces up, an object's
-// sides face across it. Every method calls this on its final segments.
+// sides face across it. The baselines call this on their final segments (their
+// restore_object_bottoms); the symmetry method runs it as its stage object_bottoms.
 #include <vector>
 
+#include "symmetry_segmentation/parameter_schema.h"
 #include "symmetry_segmentation/preprocessing.h"
 #include "symmetry_segmentation/scene.h"
 #include "symmetry_segmentation/segmentation_result.h"
@@ -15,17 +17,28 @@
 namespace symmetry_segmentation {
 
 struct ObjectBottomParams {
-  float max_normal_cos = 0.5f;  ///< |n . table normal| below this: a side, not the table (60 deg).
-  float link_distance = 0.0f;   ///< Reach from a segment's point; 0: the preprocessing voxel size.
+  float max_side_normal_cos = 0.5f;
+  float link_distance = 0.0f;
 };
 
-/// Adds to `segments` the input points preprocessing dropped as within the table margin whose
-/// own normal runs across the table's and which are linked, directly or through other such
-/// points, to a segment's point within `link_distance` (each goes to the segment of the nearest
-/// such point). Does nothing when `preprocessing.restore_object_bottoms` is off, without a table
-/// or without input normals. Returns how many were added.
-std::size_t restoreObjectBottoms(const Scene& scene, const PreprocessedScene& prepared,
-                                 const PreprocessParams& preprocessing, std::vector<Segment>& segments,
-                                 const ObjectBottomParams& params = {});
+inline void describeParameters(ParameterList<ObjectBottomParams>& list) {
+  list.add("max_side_normal_cos", &ObjectBottomParams::max_side_normal_cos, 0.0, 1.0, "",
+           "a dropped point whose normal has a smaller |cosine| with the table's is an object's side (0.5: 60 deg)")
+      .add("link_distance", &ObjectBottomParams::link_distance, 0.0, 0.1, "m",
+           "reach from a segment's point to a side point; 0: the working voxel size");
+}
+
+/// For each segment (sorted input-cloud indices): the input points preprocessing dropped as
+/// within the table margin whose own normal runs across the table's and which are linked,
+/// directly or through other such points, to the segment's points within the link distance
+/// (each goes to the segment of the nearest such point); sorted. All empty without a table or
+/// without input normals.
+std::vector<std::vector<int>> objectBottoms(const Scene& scene, const PreprocessedScene& prepared, float voxel_size,
+                                            const std::vector<std::vector<int>>& segments,
+                                            const ObjectBottomParams& params);
+
+/// Adds objectBottoms() to `segments`' indices (kept sorted). Returns how many were added.
+std::size_t restoreObjectBottoms(const Scene& scene, const PreprocessedScene& prepared, float voxel_size,
+                                 std::vector<Segment>& segments, const ObjectBottomParams& params);
 
 }  // namespace symmetry_segmentation

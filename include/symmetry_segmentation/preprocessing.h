@@ -17,7 +17,6 @@ struct PreprocessParams {
   bool remove_table = true;
   float table_margin = 0.01f;
   bool adaptive_table_margin = true;
-  bool restore_object_bottoms = true;
   float ransac_distance = 0.01f;
   int ransac_iterations = 500;
   float normal_radius = 0.03f;
@@ -32,8 +31,6 @@ inline void describeParameters(ParameterList<PreprocessParams>& list) {
            "points closer than this above the plane count as table (with adaptive_table_margin: the largest margin)")
       .add("adaptive_table_margin", &P::adaptive_table_margin,
            "margin = 3 sigma of the table points' noise (5 mm .. table_margin), so fused clouds keep object bottoms")
-      .add("restore_object_bottoms", &P::restore_object_bottoms,
-           "give each segment back its sides' points within the margin (input normals across the table's)")
       .add("ransac_distance", &P::ransac_distance, 0.001, 0.1, "m", "RANSAC inlier distance when the plane is estimated")
       .add("ransac_iterations", &P::ransac_iterations, 1, 1000000, "", "RANSAC iterations when the plane is estimated")
       .add("normal_radius", &P::normal_radius, 0.005, 0.5, "m", "radius for normal estimation when the cloud has none")

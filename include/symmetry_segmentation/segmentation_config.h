@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "symmetry_segmentation/object_bottoms.h"
 #include "symmetry_segmentation/parameter_schema.h"
 #include "symmetry_segmentation/preprocessing.h"
 #include "symmetry_segmentation/symmetry/symmetry_params.h"
@@ -19,6 +20,7 @@ struct EuclideanParams {
   float cluster_tolerance = 0.02f;
   int min_cluster_size = 30;
   int max_cluster_size = 1000000;
+  bool restore_object_bottoms = true;
 };
 
 inline void describeParameters(ParameterList<EuclideanParams>& list) {
@@ -26,6 +28,8 @@ inline void describeParameters(ParameterList<EuclideanParams>& list) {
   list.add("cluster_tolerance", &P::cluster_tolerance, 0.001, 0.5, "m", "largest gap inside one object")
       .add("min_cluster_size", &P::min_cluster_size, 1, 100000000, "points", "in working-cloud points (1 cm voxels)")
       .add("max_cluster_size", &P::max_cluster_size, 1, 100000000, "points", "larger clusters are dropped")
+      .add("restore_object_bottoms", &P::restore_object_bottoms,
+           "give each segment back its sides' points within the table margin (object_bottoms)")
       .rule([](const P& p) {
         return p.max_cluster_size >= p.min_cluster_size ? "" : "max_cluster_size must be >= min_cluster_size";
       });
@@ -43,6 +47,7 @@ struct LccpParams {
   bool use_extended_convexity = false;
   bool use_sanity_criterion = true;
   int min_points = 30;
+  bool restore_object_bottoms = true;
 };
 
 inline void describeParameters(ParameterList<LccpParams>& list) {
@@ -59,6 +64,8 @@ inline void describeParameters(ParameterList<LccpParams>& list) {
       .add("use_extended_convexity", &P::use_extended_convexity, "LCCP extended convexity")
       .add("use_sanity_criterion", &P::use_sanity_criterion, "LCCP sanity criterion")
       .add("min_points", &P::min_points, 0, 100000000, "points", "segments with fewer input points are dropped")
+      .add("restore_object_bottoms", &P::restore_object_bottoms,
+           "give each segment back its sides' points within the table margin (object_bottoms)")
       .rule([](const P& p) {
         return p.seed_resolution > p.voxel_resolution ? "" : "needs voxel_resolution < seed_resolution";
       });
@@ -66,6 +73,7 @@ inline void describeParameters(ParameterList<LccpParams>& list) {
 
 struct SegmentationConfig {
   PreprocessParams preprocessing;
+  ObjectBottomParams object_bottoms;
   EuclideanParams euclidean;
   LccpParams lccp;
   SymmetryParams symmetry;

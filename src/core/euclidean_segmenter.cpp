@@ -30,7 +30,9 @@ SegmentationResult EuclideanSegmenter::segment(const Scene& scene) const {
     segment.indices = expandToInput(prepared, cluster.indices);
     result.segments.push_back(std::move(segment));
   }
-  restoreObjectBottoms(scene, prepared, preprocessing_, result.segments);
+  if (params_.restore_object_bottoms) {
+    restoreObjectBottoms(scene, prepared, preprocessing_.voxel_size, result.segments, bottoms_);
+  }
   sortSegmentsBySize(result.segments);
   result.timing_ms.emplace_back("clustering", stage.lap());
   result.timing_ms.emplace_back("total", total.elapsedMs());

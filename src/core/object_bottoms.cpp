@@ -10,18 +10,16 @@
 
 namespace symmetry_segmentation {
 
-std::size_t restoreObjectBottoms(const Scene& scene, const PreprocessedScene& prepared,
-                                 const PreprocessParams& preprocessing, std::vector<Segment>& segments,
-                                 const ObjectBottomParams& params) {
-  if (!preprocessing.restore_object_bottoms || !prepared.has_table || !scene.has_normals || !scene.cloud ||
-      segments.empty()) {
-    return 0;
-  }
+std::vector<std::vector<int>> objectBottoms(const Scene& scene, const PreprocessedScene& prepared, float voxel_size,
+                                            const std::vector<std::vector<int>>& segments,
+                                            const ObjectBottomParams& params) {
+  std::vector<std::vector<int>> added(segments.size());
+  if (!prepared.has_table || !scene.has_normals || !scene.cloud || segments.empty()) return added;
   const Cloud& input = *scene.cloud;
   const Eigen::Vector3f up = prepared.table_plane.head<3>();
   const float up_norm = up.norm();
-  if (!(up_norm > 0.0f)) return 0;
-  const float reach = params.link_distance > 0.0f ? params.link_distance : preprocessing.voxel_size;
+  if (!(up_norm > 0.0f)) return added;
+  const float reach = params.link_distance > 0.0f ? params.link_distance : voxel_size;
 
   // Dropped side points: within the margin of the plane on either side (the table's noise spreads
   // both ways), normal across the table.
@@ -35,22 +33,22 @@ std::size_t restoreObjectBottoms(const Scene& scene, const PreprocessedScene& pr
     if (h < -prepared.table_margin || h > prepared.table_margin) continue;
     const Eigen::Vector3f n = p.getNormalVector3fMap();
     const float n_norm = n.norm();
-    if (!(n_norm > 0.0f) || std::fabs(n.dot(up)) >= params.max_normal_cos * n_norm * up_norm) continue;
+    if (!(n_norm > 0.0f) || std::fabs(n.dot(up)) >= params.max_side_normal_cos * n_norm * up_norm) continue;
     candidates.push_back(static_cast<int>(i));
   }
-  if (candidates.empty()) return 0;
+  if (candidates.empty()) return added;
 
   // Segment points low enough to reach a candidate, each tagged with its segment.
   auto seeds = std::make_shared<Cloud>();
   std::vector<int> seed_segment;
   for (std::size_t s = 0; s < segments.size(); ++s) {
-    for (int i : segments[s].indices) {
+    for (int i : segments[s]) {
       if (i < 0 || static_cast<std::size_t>(i) >= input.size() || height(input[i]) > prepared.table_margin + reach) continue;
       seeds->push_back(input[i]);
       seed_segment.push_back(static_cast<int>(s));
     }
   }
-  if (seeds->empty()) return 0;
+  if (seeds->empty()) return added;
   pcl::KdTreeFLANN<PointT> seed_tree;
   seed_tree.setInputCloud(seeds);
   auto candidate_cloud = std::make_shared<Cloud>();
@@ -80,11 +78,26 @@ std::size_t restoreObjectBottoms(const Scene& scene, const PreprocessedScene& pr
       frontier.push_back(d);
     }
   }
+  // Candidates are in input order, so each list comes out sorted.
   for (std::size_t c = 0; c < candidates.size(); ++c) {
-    if (owner[c] >= 0) segments[owner[c]].indices.push_back(candidates[c]);
+    if (owner[c] >= 0) added[owner[c]].push_back(candidates[c]);
   }
-  for (Segment& segment : segments) std::sort(segment.indices.begin(), segment.indices.end());
-  return frontier.size();
+  return added;
+}
+
+std::size_t restoreObjectBottoms(const Scene& scene, const PreprocessedScene& prepared, float voxel_size,
+                                 std::vector<Segment>& segments, const ObjectBottomParams& params) {
+  std::vector<std::vector<int>> indices;
+  indices.reserve(segments.size());
+  for (const Segment& segment : segments) indices.push_back(segment.indices);
+  const std::vector<std::vector<int>> added = objectBottoms(scene, prepared, voxel_size, indices, params);
+  std::size_t count = 0;
+  for (std::size_t s = 0; s < segments.size(); ++s) {
+    count += added[s].size();
+    segments[s].indices.insert(segments[s].indices.end(), added[s].begin(), added[s].end());
+    std::sort(segments[s].indices.begin(), segments[s].indices.end());
+  }
+  return count;
 }
 
 }  // namespace symmetry_segmentation

@@ -60,7 +60,7 @@ struct Schema {
   static std::string withFullKeys(std::string problem, const std::string& prefix, const std::vector<std::string>& names) {
     if (problem.empty()) return problem;
     for (const std::string& name : names) {
-      problem = std::regex_replace(problem, std::regex("\\b" + name + "\\b"), prefix + "." + name);
+      problem = std::regex_replace(problem, std::regex("(^|[^.\\w])" + name + "\\b"), "$1" + prefix + "." + name);
     }
     return problem;
   }
@@ -71,20 +71,46 @@ const Schema& schema() {
     Schema s;
     s.section<PreprocessParams>("preprocessing", "shared by every method: supporting plane, working cloud, normals",
                                 [](auto& c) -> auto& { return c.preprocessing; });
+    s.section<ObjectBottomParams>("object_bottoms",
+                                  "every method (symmetry: stage object_bottoms): object sides within the table margin",
+                                  [](auto& c) -> auto& { return c.object_bottoms; });
     s.section<EuclideanParams>("euclidean", "pcl::EuclideanClusterExtraction on the working cloud",
                                [](auto& c) -> auto& { return c.euclidean; });
     s.section<LccpParams>("lccp", "pcl::SupervoxelClustering + pcl::LCCPSegmentation (the paper's baseline)",
                           [](auto& c) -> auto& { return c.lccp; });
     s.section<SymmetryParams>("symmetry", "the symmetry method (Ecins et al., ICRA 2016); (paper): the paper's value",
                               [](auto& c) -> auto& { return c.symmetry; });
-    s.section<SymmetryDetectionParams>("symmetry.detection", "stages 1-2: normal-edge curves and symmetry hypotheses",
-                                       [](auto& c) -> auto& { return c.symmetry.detection; });
-    s.section<SymmetryCutParams>("symmetry.cut", "stage 3: graph cut per hypothesis",
+    // One section per stage, in the order of the default list.
+    s.section<NormalEdgeCurveParams>("symmetry.curves", "stage curves: normal-edge curves",
+                                     [](auto& c) -> auto& { return c.symmetry.curves; });
+    s.section<CurvePairParams>("symmetry.curve_pairs", "stage curve_pairs: planes from matched curve pairs",
+                               [](auto& c) -> auto& { return c.symmetry.curve_pairs; });
+    s.section<UprightHypothesisParams>("symmetry.upright", "stage upright: vertical planes from single surfaces",
+                                       [](auto& c) -> auto& { return c.symmetry.upright; });
+    s.section<SymmetryCutParams>("symmetry.cut", "stage cut: graph cut per hypothesis; the data term of every stage",
                                  [](auto& c) -> auto& { return c.symmetry.cut; });
-    s.section<SymmetryRefinementParams>("symmetry.refinement", "stage 4: ICP of each segment with its reflection",
-                                        [](auto& c) -> auto& { return c.symmetry.refinement; });
-    s.section<SymmetryFilterParams>("symmetry.filter", "stage 5: scores, filter and the rewriting of segments",
+    s.section<SymmetryRefinementParams>("symmetry.refine", "stage refine: ICP of each segment with its reflection",
+                                        [](auto& c) -> auto& { return c.symmetry.refine; });
+    s.section<IslandParams>("symmetry.islands", "stage islands: groups of points apart from all others",
+                            [](auto& c) -> auto& { return c.symmetry.islands; });
+    s.section<FootprintParams>("symmetry.footprints", "stage footprints: planes for islands nothing covers",
+                               [](auto& c) -> auto& { return c.symmetry.footprints; });
+    s.section<SymmetryFilterParams>("symmetry.filter", "stage filter: scores and thresholds, also for every later stage",
                                     [](auto& c) -> auto& { return c.symmetry.filter; });
+    s.section<IslandSegmentParams>("symmetry.island_segments", "stage island_segments: islands a found plane explains",
+                                   [](auto& c) -> auto& { return c.symmetry.island_segments; });
+    s.section<MirrorTwinParams>("symmetry.mirror_twins", "stage mirror_twins: two like objects mirrored onto each other",
+                                [](auto& c) -> auto& { return c.symmetry.mirror_twins; });
+    s.section<CompositeSegmentParams>("symmetry.composites", "stage composites: two objects meeting at a concave seam",
+                                      [](auto& c) -> auto& { return c.symmetry.composites; });
+    s.section<NestedSegmentParams>("symmetry.nested", "stage nested: an object glued onto another's segment",
+                                   [](auto& c) -> auto& { return c.symmetry.nested; });
+    s.section<ColorSeamParams>("symmetry.color_seams", "stage color_seams: flush objects of different colours",
+                               [](auto& c) -> auto& { return c.symmetry.color_seams; });
+    s.section<DuplicateParams>("symmetry.dedup", "stage dedup: one segment per object",
+                               [](auto& c) -> auto& { return c.symmetry.dedup; });
+    s.section<StrayColorParams>("symmetry.stray_color_pieces", "stage stray_color_pieces: strips of the next object's colour",
+                                [](auto& c) -> auto& { return c.symmetry.stray_color_pieces; });
     return s;
   }();
   return built;

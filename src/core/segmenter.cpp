@@ -11,9 +11,9 @@ std::vector<std::string> availableMethods() { return {"symmetry", "euclidean", "
 std::string defaultMethod() { return "symmetry"; }
 
 std::unique_ptr<Segmenter> makeSegmenter(const std::string& method, const SegmentationConfig& config) {
-  if (method == "euclidean") return std::make_unique<EuclideanSegmenter>(config.preprocessing, config.euclidean);
-  if (method == "lccp") return std::make_unique<LccpSegmenter>(config.preprocessing, config.lccp);
-  if (method == "symmetry") return std::make_unique<SymmetrySegmenter>(config.preprocessing, config.symmetry);
+  if (method == "euclidean") return std::make_unique<EuclideanSegmenter>(config);
+  if (method == "lccp") return std::make_unique<LccpSegmenter>(config);
+  if (method == "symmetry") return std::make_unique<SymmetrySegmenter>(config);
   std::string known;
   for (const auto& name : availableMethods()) known += (known.empty() ? "" : ", ") + name;
   throw InputError("unknown method '" + method + "' (available: " + known + ")");

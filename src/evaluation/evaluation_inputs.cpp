@@ -45,6 +45,17 @@ std::vector<std::string> findSceneDirectories(const std::vector<std::string>& ar
   return scenes;
 }
 
+std::vector<std::string> findDataSetScenes(const std::string& argument) {
+  const fs::path path(argument);
+  boost::system::error_code error;
+  if (!fs::exists(path, error)) throw InputError(argument, "no such file or directory");
+  if (!fs::is_directory(path, error) || isLabelledScene(path)) return {argument};
+  for (const char* cloud : {"cloud.ply", "cloud.pcd"}) {
+    if (fs::is_regular_file(path / cloud, error)) return {argument};
+  }
+  return findSceneDirectories({argument});
+}
+
 std::string findSegmentsFile(const std::string& directory, const std::string& scene_name) {
   const fs::path nested = fs::path(directory) / scene_name / "segments.json";
   const fs::path flat = fs::path(directory) / (scene_name + ".json");

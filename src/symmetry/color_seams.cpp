@@ -1,4 +1,4 @@
-// Stage 5d: segments of flush objects split at their colour seams (see the header for why).
+// Stage 15, color_seams: segments of flush objects split at their colour seams (see the header for why).
 #include "symmetry_segmentation/symmetry/color_seams.h"
 
 #include <algorithm>
@@ -12,6 +12,7 @@
 
 #include "color_lab.h"
 #include "disjoint_sets.h"
+#include "symmetry_segmentation/symmetry/pipeline_state.h"
 #include "symmetry_segmentation/symmetry/smoothness_weight.h"
 #include "symmetry_segmentation/symmetry/sorted_indices.h"
 
@@ -24,7 +25,7 @@ namespace {
 std::vector<int> largeColorRegions(const std::vector<int>& points, const std::vector<Eigen::Vector3f>& lab,
                                    const std::vector<std::vector<int>>& neighbours, const ColorSeamParams& params,
                                    int& count) {
-  DisjointSets regions = colorRegions(points, lab, neighbours, params.max_link_difference);
+  DisjointSets regions = colorRegions(points, lab, neighbours, params.max_color_difference);
   std::map<int, int> sizes;
   for (std::size_t j = 0; j < points.size(); ++j) ++sizes[regions.find(static_cast<int>(j))];
   const double min_size = std::max<double>(params.min_part_points, params.min_part_fraction * points.size());
@@ -100,7 +101,7 @@ bool seamSpansBoth(const std::vector<int>& ends, const std::vector<int>& points,
     }
     return high > low ? high - low : 0.0f;
   };
-  constexpr int kDirections = 12;
+  constexpr int kDirections = 12;  // Fixed: every 15 degrees, finer than any span test needs.
   for (int step = 0; step < kDirections; ++step) {
     const float angle = static_cast<float>(M_PI) * step / kDirections;
     const Eigen::Vector3f direction = std::cos(angle) * first + std::sin(angle) * second;
@@ -195,24 +196,23 @@ int objectsAtColorSeams(const std::vector<int>& points, const std::vector<Eigen:
 
 // How much `points` contradicts `plane`: reflections into free space (as the occlusion score
 // grades them) plus reflections onto points outside it.
-float contradiction(const std::vector<int>& points, const SymmetryPlane& plane, const ReflectionMatch& match,
-                    const SegmentScorer& score) {
+float contradiction(const std::vector<int>& points, const SymmetryPlane& plane, const SceneEvidence& evidence) {
   int foreign = 0;
   for (int p : points) {
-    const int q = match(p, plane);
+    const int q = evidence.match(p, plane);
     if (q >= 0 && !contains(points, q)) ++foreign;
   }
-  return (1.0f - score(points, plane).occlusion) + static_cast<float>(foreign) / points.size();
+  return (1.0f - evidence.scores(points, plane).occlusion) + static_cast<float>(foreign) / points.size();
 }
 
 CandidateSegment withBestPlane(std::vector<int> points, const SymmetryPlane& own_plane,
-                               const std::vector<CandidateSegment>& found, const ReflectionMatch& match,
-                               const SegmentScorer& score, const ColorSeamParams& params) {
+                               const std::vector<CandidateSegment>& found, const SceneEvidence& evidence,
+                               const ColorSeamParams& params) {
   SymmetryPlane best = own_plane;
-  float least = contradiction(points, own_plane, match, score);
+  float least = contradiction(points, own_plane, evidence);
   for (const CandidateSegment& other : found) {
     if (other.points.empty() || intersectionSize(other.points, points) < params.min_plane_share * points.size()) continue;
-    const float value = contradiction(points, other.plane, match, score);
+    const float value = contradiction(points, other.plane, evidence);
     if (value < least) {
       least = value;
       best = other.plane;
@@ -220,7 +220,7 @@ CandidateSegment withBestPlane(std::vector<int> points, const SymmetryPlane& own
   }
   CandidateSegment segment;
   segment.plane = best;
-  segment.scores = score(points, best);
+  segment.scores = evidence.scores(points, best);
   segment.points = std::move(points);
   return segment;
 }
@@ -228,9 +228,9 @@ CandidateSegment withBestPlane(std::vector<int> points, const SymmetryPlane& own
 }  // namespace
 
 std::size_t splitAtColorSeams(std::vector<CandidateSegment>& segments, const std::vector<CandidateSegment>& found,
-                              const Cloud& cloud, const std::vector<std::vector<int>>& neighbours,
-                              const ReflectionMatch& match, const SegmentScorer& score,
-                              const ColorSeamParams& params) {
+                              const SceneEvidence& evidence, const ColorSeamParams& params) {
+  const Cloud& cloud = evidence.cloud();
+  const std::vector<std::vector<int>>& neighbours = evidence.neighbours();
   std::size_t split = 0;
   const std::size_t original = segments.size();
   for (std::size_t i = 0; i < original; ++i) {
@@ -259,13 +259,24 @@ std::size_t splitAtColorSeams(std::vector<CandidateSegment>& segments, const std
     ++split;
     const SymmetryPlane plane = segments[i].plane;
     for (std::size_t p = 0; p < pieces.size(); ++p) {
-      CandidateSegment piece = withBestPlane(std::move(pieces[p]), plane, found, match, score, params);
+      CandidateSegment piece = withBestPlane(std::move(pieces[p]), plane, found, evidence, params);
       piece.scores.smoothness = std::max(0.0f, piece.scores.smoothness - static_cast<float>(seam_links[p]) / piece.points.size());
       if (p == 0) segments[i] = std::move(piece);
       else segments.push_back(std::move(piece));
     }
   }
   return split;
+}
+
+void ColorSeamStage::run(PipelineState& state) const {
+  std::size_t split = 0;
+  if (state.has_color) {
+    ColorSeamParams params = params_;
+    params.min_part_points = filter_.min_segment_points;
+    params.flat_link_angle_deg = filter_.smooth_normal_angle_deg;
+    split = splitAtColorSeams(state.segments, state.candidates, *state.evidence, params);
+  }
+  state.count("split", split);
 }
 
 }  // namespace symmetry_segmentation

@@ -1,4 +1,4 @@
-// Stage 5c: segments made of two objects split at their concave seam (see the header for why).
+// Stage 13, composites: segments made of two objects split at their concave seam (see the header for why).
 #include "symmetry_segmentation/symmetry/composite_segments.h"
 
 #include <algorithm>
@@ -6,15 +6,27 @@
 #include <optional>
 #include <utility>
 
+#include "symmetry_segmentation/symmetry/pipeline_state.h"
 #include "symmetry_segmentation/symmetry/sorted_indices.h"
 
 namespace symmetry_segmentation {
 namespace {
 
+/// The evidence's concave creases at one angle.
+class Creases {
+ public:
+  Creases(const SceneEvidence& evidence, float angle_deg) : evidence_(evidence), angle_deg_(angle_deg) {}
+  bool operator()(int a, int b) const { return evidence_.concaveCrease(a, b, angle_deg_); }
+
+ private:
+  const SceneEvidence& evidence_;
+  float angle_deg_;
+};
+
 /// Whether parts a and b are apart (fewer than min_seam_links links between them) or meet at a
 /// seam at least `min_crease_fraction` of whose links cross a crease.
 bool apartOrCreased(const std::vector<int>& a, const std::vector<int>& b,
-                    const std::vector<std::vector<int>>& neighbours, const CreaseTest& crease,
+                    const std::vector<std::vector<int>>& neighbours, const Creases& crease,
                     float min_crease_fraction, const CompositeSegmentParams& params) {
   int links = 0;
   int creased = 0;
@@ -34,7 +46,7 @@ bool apartOrCreased(const std::vector<int>& a, const std::vector<int>& b,
 /// L-shaped block's slab and upright) meet at a crease too, but also run on into each other
 /// somewhere over a flat face or a convex edge, directly or through a corner neither part took.
 bool joinedWithoutCrease(const std::vector<int>& whole, const std::vector<int>& a, const std::vector<int>& b,
-                         const std::vector<std::vector<int>>& neighbours, const CreaseTest& crease) {
+                         const std::vector<std::vector<int>>& neighbours, const Creases& crease) {
   std::vector<char> seen(whole.size(), 0);
   std::vector<int> frontier;
   for (int p : a) {
@@ -61,12 +73,12 @@ bool joinedWithoutCrease(const std::vector<int>& whole, const std::vector<int>& 
 
 /// Whether `plane` mirrors more than the allowed share of `part`'s matched points onto `other`.
 bool mirroredOntoOther(const std::vector<int>& part, const std::vector<int>& other, const SymmetryPlane& plane,
-                       const ReflectionMatch& match, const CompositeSegmentParams& params) {
+                       const SceneEvidence& evidence, const CompositeSegmentParams& params) {
   int matched = 0;
   int swapped = 0;
   for (int p : part) {
     if (contains(other, p)) continue;
-    const int q = match(p, plane);
+    const int q = evidence.match(p, plane);
     if (q < 0) continue;
     ++matched;
     swapped += (contains(other, q) && !contains(part, q)) ? 1 : 0;
@@ -77,18 +89,18 @@ bool mirroredOntoOther(const std::vector<int>& part, const std::vector<int>& oth
 /// Whether parts a and b of `whole` are two objects: apart or meeting at a concave seam (at least
 /// `min_crease_fraction` of their links creased), each mirrored onto itself by `whole`'s plane.
 bool twoObjects(const CandidateSegment& whole, const std::vector<int>& a, const std::vector<int>& b,
-                float min_crease_fraction, const std::vector<std::vector<int>>& neighbours, const CreaseTest& crease,
-                const ReflectionMatch& match, const CompositeSegmentParams& params) {
+                float min_crease_fraction, const std::vector<std::vector<int>>& neighbours, const Creases& crease,
+                const SceneEvidence& evidence, const CompositeSegmentParams& params) {
   return apartOrCreased(a, b, neighbours, crease, min_crease_fraction, params) &&
-         !mirroredOntoOther(a, b, whole.plane, match, params) && !mirroredOntoOther(b, a, whole.plane, match, params);
+         !mirroredOntoOther(a, b, whole.plane, evidence, params) && !mirroredOntoOther(b, a, whole.plane, evidence, params);
 }
 
 /// The two objects `whole` is made of: two segments of `parts` covering it, else one segment of
 /// `parts` and the rest of `whole` (which keeps `whole`'s plane).
 std::optional<std::pair<CandidateSegment, CandidateSegment>> findSplit(
     const CandidateSegment& whole, const std::vector<CandidateSegment>& parts,
-    const std::vector<std::vector<int>>& neighbours, const CreaseTest& crease, const ReflectionMatch& match,
-    const SegmentScorer& score, const CompositeSegmentParams& params) {
+    const std::vector<std::vector<int>>& neighbours, const Creases& crease, const SceneEvidence& evidence,
+    const CompositeSegmentParams& params) {
   const double size = static_cast<double>(whole.points.size());
   std::vector<std::size_t> nested;
   std::vector<std::size_t> inside;  // per nested part: its points within `whole`
@@ -115,7 +127,7 @@ std::optional<std::pair<CandidateSegment, CandidateSegment>> findSplit(
       // Points of `whole` in either part (the shared ones counted once, bounded by `shared`).
       const std::size_t covered = inside[x] + inside[y] - std::min(shared, std::min(inside[x], inside[y]));
       if (covered < params.min_coverage * size || covered <= best_covered) continue;
-      if (!twoObjects(whole, a, b, params.min_crease_fraction, neighbours, crease, match, params)) continue;
+      if (!twoObjects(whole, a, b, params.min_crease_fraction, neighbours, crease, evidence, params)) continue;
       if (joinedWithoutCrease(whole.points, a, b, neighbours, crease)) continue;
       best_pair = std::make_pair(nested[x], nested[y]);
       best_covered = covered;
@@ -133,7 +145,7 @@ std::optional<std::pair<CandidateSegment, CandidateSegment>> findSplit(
     if (rest.size() < params.min_part_fraction * size) continue;
     // Not found alone, a rest may belong to the part (the upright of an L-shaped block, whose
     // faces run on flush across the seam): it counts only if apart or met at creases alone.
-    if (!twoObjects(whole, a, rest, params.min_rest_crease_fraction, neighbours, crease, match, params)) continue;
+    if (!twoObjects(whole, a, rest, params.min_rest_crease_fraction, neighbours, crease, evidence, params)) continue;
     CandidateSegment other;
     other.points = std::move(rest);
     other.plane = whole.plane;
@@ -141,7 +153,7 @@ std::optional<std::pair<CandidateSegment, CandidateSegment>> findSplit(
     best_part = nested[x];
   }
   if (!best_rest) return std::nullopt;
-  best_rest->scores = score(best_rest->points, best_rest->plane);
+  best_rest->scores = evidence.scores(best_rest->points, best_rest->plane);
   return std::make_pair(parts[best_part], std::move(*best_rest));
 }
 
@@ -150,14 +162,14 @@ bool samePoints(const CandidateSegment& a, const CandidateSegment& b) { return a
 }  // namespace
 
 std::size_t splitCompositeSegments(std::vector<CandidateSegment>& segments, const std::vector<CandidateSegment>& parts,
-                                   const std::vector<std::vector<int>>& neighbours, const CreaseTest& crease,
-                                   const ReflectionMatch& match, const SegmentScorer& score,
-                                   const CompositeSegmentParams& params) {
+                                   const SceneEvidence& evidence, const CompositeSegmentParams& params) {
+  const std::vector<std::vector<int>>& neighbours = evidence.neighbours();
+  const Creases crease(evidence, params.crease_angle_deg);
   std::vector<CandidateSegment> kept;
   std::vector<CandidateSegment> added;
   std::size_t replaced = 0;
   for (auto& segment : segments) {
-    auto split = findSplit(segment, parts, neighbours, crease, match, score, params);
+    auto split = findSplit(segment, parts, neighbours, crease, evidence, params);
     if (!split) {
       kept.push_back(std::move(segment));
       continue;
@@ -177,6 +189,9 @@ std::size_t splitCompositeSegments(std::vector<CandidateSegment>& segments, cons
   return replaced;
 }
 
+void CompositeStage::run(PipelineState& state) const {
+  const std::vector<CandidateSegment> parts = state.segments;
+  state.count("split", splitCompositeSegments(state.segments, parts, *state.evidence, params_));
+}
+
 }  // namespace symmetry_segmentation
-
-

@@ -34,6 +34,6 @@ struct CurveGeometry {
 
 /// matchCurvePair on prepared geometry; `same` = the two are one curve.
 std::vector<PlaneSample> matchCurveGeometry(const CurveGeometry& a, const CurveGeometry& b, bool same,
-                                            const SymmetryDetectionParams& params);
+                                            const CurvePairParams& params);
 
 }  // namespace symmetry_segmentation

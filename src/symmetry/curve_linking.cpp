@@ -101,12 +101,12 @@ std::vector<Eigen::Vector3f> curveTangents(const std::vector<Eigen::Vector3f>& p
 }  // namespace
 
 std::vector<Curve> linkCurves(const Cloud& cloud, const std::vector<int>& boundary,
-                              const SymmetryDetectionParams& params) {
+                              const NormalEdgeCurveParams& params) {
   return linkCurves(cloud, boundary, std::vector<int>(cloud.size(), 1), params);
 }
 
 std::vector<Curve> linkCurves(const Cloud& cloud, const std::vector<int>& boundary, const std::vector<int>& labels,
-                              const SymmetryDetectionParams& params) {
+                              const NormalEdgeCurveParams& params) {
   std::vector<Curve> curves;
   if (boundary.empty()) return curves;
   std::vector<Eigen::Vector3f> positions;

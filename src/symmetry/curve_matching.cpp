@@ -23,7 +23,7 @@ struct Match {
 }  // namespace
 
 std::vector<PlaneSample> matchCurveGeometry(const CurveGeometry& a, const CurveGeometry& b, bool same,
-                                            const SymmetryDetectionParams& params) {
+                                            const CurvePairParams& params) {
   std::vector<PlaneSample> planes;
   if (a.boxDistance(b) > params.max_match_distance) return planes;
   const float min_squared = params.min_match_distance * params.min_match_distance;
@@ -63,7 +63,7 @@ std::vector<PlaneSample> matchCurveGeometry(const CurveGeometry& a, const CurveG
 }
 
 std::vector<PlaneSample> matchCurvePair(const Cloud& cloud, const Curve& a, const Curve& b,
-                                        const SymmetryDetectionParams& params) {
+                                        const CurvePairParams& params) {
   const bool same = &a == &b || a.points == b.points;
   return matchCurveGeometry(CurveGeometry(cloud, a), CurveGeometry(cloud, b), same, params);
 }

@@ -10,18 +10,14 @@
 #include "symmetry_segmentation/symmetry/normal_edge_curves.h"
 
 namespace symmetry_segmentation {
-namespace {
 
-// Sides meeting at less than this give no reliable cross product: keep the curve tangent.
-constexpr float kMinEdgeAngleDeg = 20.0f;
-
-}  // namespace
-
-void useEdgeTangents(const Cloud& cloud, const std::vector<int>& labels, const SymmetryDetectionParams& params,
+void useEdgeTangents(const Cloud& cloud, const std::vector<int>& labels, const NormalEdgeCurveParams& params,
                      std::vector<Curve>& curves) {
   pcl::KdTreeFLANN<PointT> tree;
   tree.setInputCloud(Cloud::ConstPtr(&cloud, [](const Cloud*) {}));
-  const float min_sin = std::sin(kMinEdgeAngleDeg * static_cast<float>(M_PI) / 180.0f);
+  // Sides meeting at less than min_edge_angle_deg give no reliable cross product: the curve
+  // tangent stays.
+  const float min_sin = std::sin(params.min_edge_angle_deg * static_cast<float>(M_PI) / 180.0f);
   std::vector<int> neighbours;
   std::vector<float> squared_distances;
   for (Curve& curve : curves) {

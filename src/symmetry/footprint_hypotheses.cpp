@@ -1,4 +1,4 @@
-// Stage 2c: footprint planes for islands no cut reached (see the header for why).
+// Stage 7, footprints: footprint planes for islands no cut reached (see the header for why).
 #include "symmetry_segmentation/symmetry/footprint_hypotheses.h"
 
 #include <algorithm>
@@ -6,6 +6,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "symmetry_segmentation/symmetry/pipeline_state.h"
 #include "symmetry_segmentation/symmetry/sorted_indices.h"
 #include "symmetry_segmentation/symmetry/symmetry_plane.h"
 
@@ -60,6 +61,22 @@ std::vector<std::vector<int>> groupsNoSegmentCovers(const std::vector<std::vecto
     if (!covered) result.push_back(group);
   }
   return result;
+}
+
+void FootprintStage::run(PipelineState& state) const {
+  const std::size_t before = state.hypotheses.size();
+  if (state.up) {
+    std::vector<CandidateSegment> passing;
+    for (const CandidateSegment& candidate : state.candidates) {
+      if (passesFilter(candidate, filter_)) passing.push_back(candidate);
+    }
+    for (const auto& island : groupsNoSegmentCovers(state.islands, passing, params_.min_island_coverage)) {
+      for (auto& hypothesis : footprintHypotheses(*state.cloud, island, *state.up, params_.max_extent)) {
+        state.hypotheses.push_back(std::move(hypothesis));
+      }
+    }
+  }
+  state.count("hypotheses", state.hypotheses.size() - before);
 }
 
 }  // namespace symmetry_segmentation

@@ -1,9 +1,10 @@
-// Stage 5b': segments of two mirror-image objects split (see the header for why).
+// Stage 12, mirror_twins: segments of two mirror-image objects split (see the header for why).
 #include "symmetry_segmentation/symmetry/mirror_twins.h"
 
 #include <algorithm>
 #include <map>
 
+#include "symmetry_segmentation/symmetry/pipeline_state.h"
 #include "symmetry_segmentation/symmetry/sorted_indices.h"
 
 namespace symmetry_segmentation {
@@ -37,9 +38,10 @@ std::vector<int> surfacePieces(const std::vector<int>& points, const std::vector
 }
 
 // The pieces of `segment` if they are mirror twins, else nothing.
-std::vector<std::vector<int>> twinPieces(const CandidateSegment& segment, const Cloud& cloud,
-                                         const std::vector<std::vector<int>>& neighbours, const ReflectionMatch& match,
-                                         const ObservedFree& free, const MirrorTwinParams& params) {
+std::vector<std::vector<int>> twinPieces(const CandidateSegment& segment, const SceneEvidence& evidence,
+                                         const MirrorTwinParams& params) {
+  const Cloud& cloud = evidence.cloud();
+  const std::vector<std::vector<int>>& neighbours = evidence.neighbours();
   const std::vector<int>& points = segment.points;
   int count = 0;
   const std::vector<int> piece = surfacePieces(points, neighbours, count);
@@ -56,12 +58,12 @@ std::vector<std::vector<int>> twinPieces(const CandidateSegment& segment, const 
   int pairs = 0, free_pairs = 0;
   for (std::size_t k = 0; k < points.size(); ++k) {
     if (part[piece[k]] < 0) continue;
-    const int q = match(points[k], segment.plane);
+    const int q = evidence.match(points[k], segment.plane);
     const int j = q < 0 ? -1 : positionIn(points, q);
     if (j < 0 || part[piece[j]] < 0 || part[piece[j]] == part[piece[k]]) continue;
     ++pairs;
     const Eigen::Vector3f middle = 0.5f * (cloud[points[k]].getVector3fMap() + cloud[q].getVector3fMap());
-    free_pairs += free(middle) ? 1 : 0;
+    free_pairs += evidence.observedFree(middle) ? 1 : 0;
   }
   if (pairs < params.min_pairs || free_pairs < params.min_free_fraction * pairs) return {};
 
@@ -100,26 +102,29 @@ std::vector<std::vector<int>> twinPieces(const CandidateSegment& segment, const 
 
 }  // namespace
 
-std::size_t splitMirrorTwins(std::vector<CandidateSegment>& segments, const Cloud& cloud,
-                             const std::vector<std::vector<int>>& neighbours, const ReflectionMatch& match,
-                             const ObservedFree& free, const SegmentScorer& score, const MirrorTwinParams& params) {
+std::size_t splitMirrorTwins(std::vector<CandidateSegment>& segments, const SceneEvidence& evidence,
+                             const MirrorTwinParams& params) {
   std::size_t split = 0;
   const std::size_t original = segments.size();
   for (std::size_t i = 0; i < original; ++i) {
-    std::vector<std::vector<int>> pieces = twinPieces(segments[i], cloud, neighbours, match, free, params);
+    std::vector<std::vector<int>> pieces = twinPieces(segments[i], evidence, params);
     if (pieces.empty()) continue;
     ++split;
     const SymmetryPlane plane = segments[i].plane;
     for (std::size_t p = 0; p < pieces.size(); ++p) {
       CandidateSegment piece;
       piece.plane = plane;
-      piece.scores = score(pieces[p], plane);
+      piece.scores = evidence.scores(pieces[p], plane);
       piece.points = std::move(pieces[p]);
       if (p == 0) segments[i] = std::move(piece);
       else segments.push_back(std::move(piece));
     }
   }
   return split;
+}
+
+void MirrorTwinStage::run(PipelineState& state) const {
+  state.count("split", splitMirrorTwins(state.segments, *state.evidence, params_));
 }
 
 }  // namespace symmetry_segmentation

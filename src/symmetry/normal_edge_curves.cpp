@@ -1,5 +1,5 @@
-// Stage 1 of the symmetry method: supervoxels merged into smooth surfaces, and the points where
-// those surfaces meet (normal edges), linked into curves (linking is in curve_linking.cpp).
+// Stage 1, curves: supervoxels merged into smooth surfaces, and the points where those surfaces
+// meet (normal edges), linked into curves (linking is in curve_linking.cpp).
 #include "symmetry_segmentation/symmetry/normal_edge_curves.h"
 
 #include <cmath>
@@ -9,18 +9,15 @@
 #include <pcl/segmentation/supervoxel_clustering.h>
 
 #include "disjoint_sets.h"
+#include "symmetry_segmentation/symmetry/pipeline_state.h"
 
 namespace symmetry_segmentation {
 namespace {
 
 using SupervoxelPoint = pcl::PointXYZRGBA;
 
-// Smoothly touching supervoxels whose mean normals differ more than this are not merged
-// (cylinders down to ~6 cm radius still merge with 3 cm seeds).
-constexpr float kMaxMeanNormalAngleDeg = 30.0f;
-
 /// Supervoxel label per working-cloud point (0 = not in any supervoxel).
-std::vector<int> supervoxelLabels(const Cloud& cloud, const SymmetryDetectionParams& params) {
+std::vector<int> supervoxelLabels(const Cloud& cloud, const NormalEdgeCurveParams& params) {
   auto points = std::make_shared<pcl::PointCloud<SupervoxelPoint>>();
   auto normals = std::make_shared<pcl::PointCloud<pcl::Normal>>();
   points->reserve(cloud.size());
@@ -60,7 +57,7 @@ std::vector<int> supervoxelLabels(const Cloud& cloud, const SymmetryDetectionPar
 
 }  // namespace
 
-std::vector<int> mergedSegmentLabels(const Cloud& cloud, const SymmetryDetectionParams& params) {
+std::vector<int> mergedSegmentLabels(const Cloud& cloud, const NormalEdgeCurveParams& params) {
   if (cloud.empty()) return {};
   const std::vector<int> supervoxel = supervoxelLabels(cloud, params);
 
@@ -101,7 +98,7 @@ std::vector<int> mergedSegmentLabels(const Cloud& cloud, const SymmetryDetection
   // their mean normals are far apart: a supervoxel bent over an edge touches both faces smoothly
   // and must not glue them together.
   const float min_cos = std::cos(params.merge_normal_angle_deg * static_cast<float>(M_PI) / 180.0f);
-  const float min_mean_cos = std::cos(kMaxMeanNormalAngleDeg * static_cast<float>(M_PI) / 180.0f);
+  const float min_mean_cos = std::cos(params.curved_merge_angle_deg * static_cast<float>(M_PI) / 180.0f);
   DisjointSets sets(max_label + 1);
   for (const auto& [pair, sums] : contact) {
     const auto [a, b] = pair;
@@ -124,7 +121,7 @@ std::vector<int> mergedSegmentLabels(const Cloud& cloud, const SymmetryDetection
 }
 
 std::vector<int> boundaryPoints(const Cloud& cloud, const std::vector<int>& labels,
-                                const SymmetryDetectionParams& params) {
+                                const NormalEdgeCurveParams& params) {
   std::vector<int> boundary;
   if (cloud.empty()) return boundary;
   pcl::KdTreeFLANN<PointT> tree;
@@ -144,16 +141,22 @@ std::vector<int> boundaryPoints(const Cloud& cloud, const std::vector<int>& labe
   return boundary;
 }
 
-std::vector<Curve> extractNormalEdgeCurves(const Cloud& cloud, const SymmetryDetectionParams& params) {
+std::vector<Curve> extractNormalEdgeCurves(const Cloud& cloud, const NormalEdgeCurveParams& params) {
   return extractNormalEdgeCurves(cloud, mergedSegmentLabels(cloud, params), params);
 }
 
 std::vector<Curve> extractNormalEdgeCurves(const Cloud& cloud, const std::vector<int>& labels,
-                                           const SymmetryDetectionParams& params) {
+                                           const NormalEdgeCurveParams& params) {
   const std::vector<int> boundary = boundaryPoints(cloud, labels, params);
   std::vector<Curve> curves = linkCurves(cloud, boundary, labels, params);
   useEdgeTangents(cloud, labels, params, curves);
   return curves;
+}
+
+void NormalEdgeCurveStage::run(PipelineState& state) const {
+  state.surfaces = mergedSegmentLabels(*state.cloud, params_);
+  state.curves = extractNormalEdgeCurves(*state.cloud, state.surfaces, params_);
+  state.count("curves", state.curves.size());
 }
 
 }  // namespace symmetry_segmentation

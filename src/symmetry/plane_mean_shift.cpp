@@ -12,8 +12,9 @@ namespace symmetry_segmentation {
 namespace {
 
 constexpr float kDegPerRad = 180.0f / static_cast<float>(M_PI);
-constexpr int kMaxStarts = 400;      // More samples than this: start from an even subset.
-constexpr int kMaxIterations = 100;
+// Fixed (numerical, not tunables of the method; the bandwidths are parameters):
+constexpr int kMaxStarts = 400;      // More samples than this: start from an even subset (cost bound).
+constexpr int kMaxIterations = 100;  // A mode has converged long before.
 constexpr float kCutoff = 9.0f;      // Kernel support: 3 bandwidths (squared normalised distance).
 
 bool planeLess(const SymmetryPlane& a, const SymmetryPlane& b) {

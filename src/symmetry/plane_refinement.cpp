@@ -1,4 +1,4 @@
-// Stage 4: the plane that best maps a segment onto itself. This is point-to-plane ICP between
+// Stage 5, refine: the plane that best maps a segment onto itself. This is point-to-plane ICP between
 // the segment and its reflection, with the motion constrained to be a reflection: each
 // iteration mirrors the segment about the current plane, pairs every mirrored point one-to-one
 // with its nearest compatible segment point, and solves a Gauss-Newton step for the plane's
@@ -8,27 +8,25 @@
 // as reflections into free space.
 #include "symmetry_segmentation/symmetry/plane_refinement.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include <Eigen/Cholesky>
 
+#include "symmetry_segmentation/parallel_for.h"
+#include "symmetry_segmentation/symmetry/pipeline_state.h"
 #include "symmetry_segmentation/symmetry/point_grid.h"
+#include "symmetry_segmentation/symmetry/symmetric_graph_cut.h"
 #include "symmetry_segmentation/symmetry/symmetry_plane.h"
 
 namespace symmetry_segmentation {
 namespace {
 
-// A refinement that turns the plane by more than this found another symmetry, not a better
-// estimate of this one.
-constexpr float kMaxRefinementAngleDeg = 15.0f;
-constexpr std::size_t kMinSegmentPoints = 10;
-// Most of the mirrored segment must find counterparts for the plane to be a symmetry of it.
-constexpr float kMinMatchedFraction = 0.5f;
-// Mirrored and matched normals further apart than this are different surfaces.
-constexpr float kMinNormalCos = 0.7f;  // ~45 degrees
+// Fixed: a step this small has converged (m, and radians of the normal).
 constexpr float kConvergedStep = 1e-5f;
-// Most mirrored points land within a voxel of their counterpart: search that close first.
+// Fixed, a speed-up only: most mirrored points land within a voxel of their counterpart, so the
+// grid has 1 cm cells and that radius is searched first (the nearest within it is the nearest).
 constexpr float kNearRadius = 0.01f;
 
 struct Match {
@@ -40,12 +38,12 @@ struct Match {
 /// is compatible with `normal`, or -1. (On a thin wall the nearest voxel is often the other
 /// side's, facing the opposite way.)
 int nearestCompatible(const PointGrid& grid, const Cloud& points, const Eigen::Vector3f& query,
-                      const Eigen::Vector3f& normal, float radius, float& squared_distance) {
+                      const Eigen::Vector3f& normal, float radius, float min_normal_cos, float& squared_distance) {
   int nearest = -1;
   squared_distance = std::numeric_limits<float>::max();
   for (const float r : {std::min(kNearRadius, radius), radius}) {
     grid.forEachWithin(query, r, [&](int index, float squared) {
-      if (squared < squared_distance && normal.dot(points.points[index].getNormalVector3fMap()) >= kMinNormalCos) {
+      if (squared < squared_distance && normal.dot(points.points[index].getNormalVector3fMap()) >= min_normal_cos) {
         squared_distance = squared;
         nearest = index;
       }
@@ -65,8 +63,8 @@ void tangentBasis(const Eigen::Vector3f& n, Eigen::Vector3f& u, Eigen::Vector3f&
 }  // namespace
 
 SymmetryPlane refinePlane(const Cloud& cloud, const std::vector<int>& segment, const SymmetryPlane& plane,
-                          const SymmetryRefinementParams& refinement, const SymmetryDetectionParams& /*detection*/) {
-  if (!refinement.enabled || segment.size() < kMinSegmentPoints) return plane;
+                          const SymmetryRefinementParams& refinement) {
+  if (static_cast<int>(segment.size()) < refinement.min_points) return plane;
   auto points = std::make_shared<Cloud>();
   points->reserve(segment.size());
   for (int index : segment) points->push_back(cloud.points[index]);
@@ -88,7 +86,7 @@ SymmetryPlane refinePlane(const Cloud& cloud, const std::vector<int>& segment, c
       float squared = 0.0f;
       const int target = nearestCompatible(grid, *points, reflectPoint(current, p.getVector3fMap()),
                                            reflectDirection(current, p.getNormalVector3fMap()),
-                                           refinement.icp_max_correspondence, squared);
+                                           refinement.icp_max_correspondence, refinement.min_normal_cos, squared);
       if (target < 0 || squared > max_squared) continue;
       Match& match = best_for_target[target];
       if (squared < match.squared_distance) match = {i, squared};
@@ -100,7 +98,8 @@ SymmetryPlane refinePlane(const Cloud& cloud, const std::vector<int>& segment, c
         ++matched;
       }
     }
-    if (matched < kMinMatchedFraction * static_cast<float>(n)) return plane;
+    // Most of the mirrored segment must find counterparts for the plane to be a symmetry of it.
+    if (matched < refinement.min_matched_fraction * static_cast<float>(n)) return plane;
 
     // Gauss-Newton on (a, b, delta_d) with normal n + a u + b v, residual
     // r = n_q . (M(p) - q), M(p) = p - 2 (n . p + d) n.
@@ -131,8 +130,28 @@ SymmetryPlane refinePlane(const Cloud& cloud, const std::vector<int>& segment, c
     if (step.norm() < kConvergedStep) break;
   }
   current = canonicalPlane(current);
-  if (planeAngleDeg(current, plane) > kMaxRefinementAngleDeg) return plane;
+  // Turned further, it found another symmetry, not a better estimate of this one.
+  if (planeAngleDeg(current, plane) > refinement.max_turn_deg) return plane;
   return current;
+}
+
+void RefineStage::run(PipelineState& state) const {
+  const std::size_t first = state.refined;
+  std::vector<char> recut(state.candidates.size() - first, 0);  // per index: no shared counter
+  parallelFor(recut.size(), state.threads, [&](std::size_t k) {
+    const std::size_t i = first + k;
+    CandidateSegment& candidate = state.candidates[i];
+    if (static_cast<int>(candidate.points.size()) < filter_.min_segment_points) return;
+    const SymmetryPlane before = candidate.plane;
+    candidate.plane = refinePlane(*state.cloud, candidate.points, candidate.plane, params_);
+    // The same plane would give the same cut.
+    if (candidate.plane.normal == before.normal && candidate.plane.distance == before.distance) return;
+    candidate.points = state.graph->segment(candidate.plane, state.hypotheses[i].anchor);
+    candidate.scores = state.evidence->scores(candidate.points, candidate.plane);
+    recut[k] = 1;
+  });
+  state.refined = state.candidates.size();
+  state.count("recuts", static_cast<std::size_t>(std::count(recut.begin(), recut.end(), 1)));
 }
 
 }  // namespace symmetry_segmentation

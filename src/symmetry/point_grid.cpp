@@ -8,7 +8,7 @@
 namespace symmetry_segmentation {
 namespace {
 
-/// Cap on the number of cells: a stray far point must not make the grid huge.
+/// Fixed: cap on the number of cells, so a stray far point cannot make the grid huge (memory).
 constexpr double kMaxCells = 4.0e6;
 
 }  // namespace

@@ -1,9 +1,7 @@
+// Stage 10, filter: the candidates that pass the paper's score thresholds (see the header).
 #include "symmetry_segmentation/symmetry/segment_filter.h"
 
-#include <algorithm>
-#include <numeric>
-
-#include "symmetry_segmentation/symmetry/sorted_indices.h"
+#include "symmetry_segmentation/symmetry/pipeline_state.h"
 
 namespace symmetry_segmentation {
 
@@ -12,30 +10,16 @@ bool passesFilter(const CandidateSegment& segment, const SymmetryFilterParams& p
          segment.scores.occlusion > params.s_occl && segment.scores.smoothness < params.s_smooth;
 }
 
-float overlapOfSmaller(const std::vector<int>& a, const std::vector<int>& b) {
-  if (a.empty() || b.empty()) return 0.0f;
-  const std::size_t common = intersectionSize(a, b);
-  return static_cast<float>(common) / static_cast<float>(std::min(a.size(), b.size()));
-}
-
-std::vector<CandidateSegment> removeDuplicates(std::vector<CandidateSegment> segments,
-                                               const SymmetryFilterParams& params) {
-  std::vector<std::size_t> order(segments.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    const auto& x = segments[a];
-    const auto& y = segments[b];
-    if (x.scores.smoothness != y.scores.smoothness) return x.scores.smoothness < y.scores.smoothness;
-    return x.points.size() > y.points.size();
-  });
-  std::vector<CandidateSegment> kept;
-  for (std::size_t index : order) {
-    const bool duplicate = std::any_of(kept.begin(), kept.end(), [&](const CandidateSegment& k) {
-      return overlapOfSmaller(k.points, segments[index].points) > params.duplicate_overlap;
-    });
-    if (!duplicate) kept.push_back(std::move(segments[index]));
+void FilterStage::run(PipelineState& state) const {
+  std::size_t non_empty = 0;
+  state.segments.clear();
+  for (const CandidateSegment& candidate : state.candidates) {
+    if (static_cast<int>(candidate.points.size()) >= params_.min_segment_points) ++non_empty;
+    // Copies: later stages still read the candidates (colour seams try their planes).
+    if (passesFilter(candidate, params_)) state.segments.push_back(candidate);
   }
-  return kept;
+  state.count("candidates", non_empty);
+  state.count("kept", state.segments.size());
 }
 
 }  // namespace symmetry_segmentation

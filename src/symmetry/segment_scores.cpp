@@ -1,4 +1,4 @@
-// Stage-5 scores of a segment (paper eq. 13-14, as we read them):
+// The scores of a segment (paper eq. 13-14, as we read them), for the filter and every later stage:
 //   occlusion  = 1 - sum_{p in S} freeCost(p) / |S|, where freeCost is the data term's cost of
 //                foreground for a reflection into observed free space (0 within dmax of a surface,
 //                rising to 1 at dbuf; 1 deep below the table) and 0 for any other landing. The

@@ -1,4 +1,4 @@
-// Stage 5e: strips of a neighbour's colour moved to that neighbour (see the header for why).
+// Stage 17, stray_color_pieces: strips of a neighbour's colour moved to that neighbour (see the header for why).
 #include "symmetry_segmentation/symmetry/stray_color_pieces.h"
 
 #include <algorithm>
@@ -7,6 +7,7 @@
 
 #include "color_lab.h"
 #include "disjoint_sets.h"
+#include "symmetry_segmentation/symmetry/pipeline_state.h"
 #include "symmetry_segmentation/symmetry/sorted_indices.h"
 
 namespace symmetry_segmentation {
@@ -47,9 +48,8 @@ ColorRegions colorRegionsOf(const std::vector<int>& points, const Cloud& cloud,
 }  // namespace
 
 std::size_t moveStrayColorPieces(std::vector<CandidateSegment>& segments, const Cloud& cloud,
-                                 const std::vector<std::vector<int>>& neighbours, float max_color_difference) {
-  constexpr float kMinDominantShare = 0.7f;
-  constexpr float kMaxStrayShare = 0.3f;
+                                 const std::vector<std::vector<int>>& neighbours, const StrayColorParams& params) {
+  const float max_color_difference = params.max_color_difference;
   std::vector<ColorRegions> regions;
   std::vector<int> owner(cloud.size(), -1);
   for (std::size_t s = 0; s < segments.size(); ++s) {
@@ -60,7 +60,7 @@ std::size_t moveStrayColorPieces(std::vector<CandidateSegment>& segments, const 
   }
   auto uniform = [&](std::size_t s) {
     const ColorRegions& r = regions[s];
-    return r.dominant >= 0 && r.members[r.dominant].size() >= kMinDominantShare * segments[s].points.size();
+    return r.dominant >= 0 && r.members[r.dominant].size() >= params.min_dominant_share * segments[s].points.size();
   };
   std::vector<std::vector<int>> leaving(segments.size()), arriving(segments.size());
   for (std::size_t s = 0; s < segments.size(); ++s) {
@@ -68,7 +68,7 @@ std::size_t moveStrayColorPieces(std::vector<CandidateSegment>& segments, const 
     const ColorRegions& r = regions[s];
     const std::vector<int>& points = segments[s].points;
     for (std::size_t g = 0; g < r.members.size(); ++g) {
-      if (static_cast<int>(g) == r.dominant || r.members[g].size() > kMaxStrayShare * points.size()) continue;
+      if (static_cast<int>(g) == r.dominant || r.members[g].size() > params.max_stray_share * points.size()) continue;
       if (colorDifference(r.mean[g], r.mean[r.dominant]) <= max_color_difference) continue;
       std::map<int, int> links;  // adjacent segment -> links
       for (int j : r.members[g]) {
@@ -102,6 +102,12 @@ std::size_t moveStrayColorPieces(std::vector<CandidateSegment>& segments, const 
     segments[s].points = std::move(merged);
   }
   return moved;
+}
+
+void StrayColorStage::run(PipelineState& state) const {
+  std::size_t moved = 0;
+  if (state.has_color) moved = moveStrayColorPieces(state.segments, *state.cloud, state.evidence->neighbours(), params_);
+  state.count("points_moved", moved);
 }
 
 }  // namespace symmetry_segmentation

@@ -1,4 +1,4 @@
-// Stage 3: graph-cut segmentation of the working cloud for one symmetry plane (paper eq. 7-12).
+// Stage 4, cut: graph-cut segmentation of the working cloud for one symmetry plane (paper eq. 7-12).
 // Nodes are points; source = foreground. Unary costs come from ReflectionDataTerm, pairwise
 // links are the k-NN smoothness links (eq. 11, precomputed) and, per plane, symmetric links
 // between a point and the point its reflection lands on (eq. 12).
@@ -10,6 +10,8 @@
 
 #include <maxflow/graph.h>
 
+#include "symmetry_segmentation/parallel_for.h"
+#include "symmetry_segmentation/symmetry/pipeline_state.h"
 #include "symmetry_segmentation/symmetry/smoothness_weight.h"
 #include "symmetry_segmentation/symmetry/strongest_component.h"
 
@@ -62,7 +64,8 @@ SymmetricGraphCut::SymmetricGraphCut(Cloud::ConstPtr cloud, const OccupancyMap& 
     if (isFinitePoint(point)) cloud_box_.extend(point.getVector3fMap());
   }
   // Reflections that matter land within dbuf of the cloud (farther ones are judged free or
-  // unknown by the map itself); below the table they are decided by the table plane.
+  // unknown by the map itself); below the table they are decided by the table plane. The 2 cm
+  // beyond is fixed slack of the cache, not a tunable: the answers are the map's either way.
   Eigen::AlignedBox3f reach = cloud_box_;
   if (!reach.isEmpty()) {
     const Eigen::Vector3f margin = Eigen::Vector3f::Constant(params_.dbuf + params_.dmax + 0.02f);
@@ -137,6 +140,21 @@ std::vector<int> SymmetricGraphCut::segment(const SymmetryPlane& plane, const st
     foreground[i] = graph.what_segment(i, FlowGraph::SINK) == FlowGraph::SOURCE;
   }
   return strongestForegroundComponent(foreground, neighbours_, symmetric_links, support, anchor);
+}
+
+void GraphCutStage::run(PipelineState& state) const {
+  const std::size_t first = state.candidates.size();
+  state.candidates.resize(state.hypotheses.size());
+  parallelFor(state.hypotheses.size() - first, state.threads, [&](std::size_t k) {
+    const std::size_t i = first + k;
+    CandidateSegment& candidate = state.candidates[i];
+    candidate.plane = state.hypotheses[i].plane;
+    candidate.points = state.graph->segment(candidate.plane, state.hypotheses[i].anchor);
+    if (static_cast<int>(candidate.points.size()) >= filter_.min_segment_points) {
+      candidate.scores = state.evidence->scores(candidate.points, candidate.plane);
+    }
+  });
+  state.count("cuts", state.hypotheses.size() - first);
 }
 
 }  // namespace symmetry_segmentation

@@ -1,28 +1,27 @@
-// Stage 2: the mean-shift modes of each curve pair's matched point pairs, then near-equal
+// Stage 2, curve_pairs: the mean-shift modes of each curve pair's matched point pairs, then near-equal
 // planes of different pairs merged, their support added up.
 #include "symmetry_segmentation/symmetry/symmetry_hypotheses.h"
 
 #include <algorithm>
 
 #include "curve_geometry.h"
+#include "symmetry_segmentation/symmetry/pipeline_state.h"
 
 namespace symmetry_segmentation {
 namespace {
 
-// A mode of one curve pair needs this many matches to be evidence at all. The evidence for one
-// plane is often spread over several short curves (an edge of a small box at 1 cm resolution
-// has ~10 points), so params.min_plane_support applies to the merged support instead.
-constexpr int kMinPairModeSupport = 3;
-
 }  // namespace
 
 std::vector<SymmetryHypothesis> detectSymmetryHypotheses(const Cloud& cloud, const std::vector<Curve>& curves,
-                                                         const SymmetryDetectionParams& params) {
+                                                         const CurvePairParams& params) {
   std::vector<CurveGeometry> geometry;
   geometry.reserve(curves.size());
   for (const Curve& curve : curves) geometry.emplace_back(cloud, curve);
 
-  const int pair_minimum = std::min(kMinPairModeSupport, params.min_plane_support);
+  // A mode of one curve pair needs min_pair_support matches to be evidence at all. The evidence
+  // for one plane is often spread over several short curves (an edge of a small box at 1 cm
+  // resolution has ~10 points), so min_plane_support applies to the merged support instead.
+  const int pair_minimum = std::min(params.min_pair_support, params.min_plane_support);
   std::vector<PlaneSample> pair_planes;
   for (std::size_t a = 0; a < geometry.size(); ++a) {
     for (std::size_t b = a; b < geometry.size(); ++b) {
@@ -48,6 +47,12 @@ std::vector<SymmetryHypothesis> detectSymmetryHypotheses(const Cloud& cloud, con
     merged.resize(params.max_hypotheses);
   }
   return merged;
+}
+
+void CurvePairStage::run(PipelineState& state) const {
+  const std::vector<SymmetryHypothesis> planes = detectSymmetryHypotheses(*state.cloud, state.curves, params_);
+  state.hypotheses.insert(state.hypotheses.end(), planes.begin(), planes.end());
+  state.count("hypotheses", planes.size());
 }
 
 }  // namespace symmetry_segmentation

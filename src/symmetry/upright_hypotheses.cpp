@@ -1,4 +1,4 @@
-// Stage 2b: vertical symmetry planes proposed from single surfaces (see the header for why).
+// Stage 3, upright: vertical symmetry planes proposed from single surfaces (see the header for why).
 #include "symmetry_segmentation/symmetry/upright_hypotheses.h"
 
 #include <algorithm>
@@ -10,19 +10,13 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "symmetry_segmentation/symmetry/point_grid.h"
+#include "symmetry_segmentation/symmetry/pipeline_state.h"
 #include "symmetry_segmentation/symmetry/symmetry_plane.h"
 
 namespace symmetry_segmentation {
 namespace {
 
 constexpr float kDegToRad = static_cast<float>(M_PI) / 180.0f;
-constexpr int kAxisPlaneAngles = 24;     // Planes through an axis tried every 7.5 degrees.
-constexpr float kLandingRadius = 0.01f;  // A reflection this close to the surface lands on it (m).
-constexpr float kColumnMargin = 0.02f;   // Height margin of the scored column around an axis (m).
-// Orientations whose contradiction (summed free-space costs, about one per point) is within this
-// of the least are told apart by agreement.
-constexpr float kContradictionTolerance = 1.0f;
 
 struct Surface {
   std::vector<int> points;
@@ -101,7 +95,7 @@ bool horizontalNormal(const Cloud& cloud, int i, const Eigen::Vector3f& up, Eige
 /// bundles) have normal lines that cross, yet no axis.
 bool coversAnArc(const Cloud& cloud, const std::vector<int>& points, const Eigen::Vector3f& up,
                  const UprightHypothesisParams& params) {
-  constexpr int kBins = 36;  // 10 degrees each
+  constexpr int kBins = 36;  // Fixed: 10 degrees each, the step the arc test above allows.
   std::vector<int> count(kBins, 0);
   const Eigen::Vector3f helper = std::fabs(up.x()) < 0.9f ? Eigen::Vector3f::UnitX() : Eigen::Vector3f::UnitY();
   const Eigen::Vector3f e1 = up.cross(helper).normalized();
@@ -136,9 +130,7 @@ struct Axis {
 /// gives the same axes).
 std::vector<Axis> fitVerticalAxes(const Cloud& cloud, const std::vector<int>& points, const Eigen::Vector3f& up,
                                   const UprightHypothesisParams& params) {
-  constexpr int kMaxAxes = 3;
-  constexpr int kSamples = 64;
-  constexpr float kMinAxisShare = 0.3f;
+  constexpr int kSamples = 64;  // Fixed: pairs of normal lines tried per axis (a cost bound).
   std::vector<Axis> axes;
   std::vector<int> remaining;
   for (int i : points) {
@@ -146,7 +138,7 @@ std::vector<Axis> fitVerticalAxes(const Cloud& cloud, const std::vector<int>& po
     if (horizontalNormal(cloud, i, up, d)) remaining.push_back(i);
   }
   std::mt19937 random(12345u);
-  while (static_cast<int>(axes.size()) < kMaxAxes && static_cast<int>(remaining.size()) >= params.min_surface_points) {
+  while (static_cast<int>(axes.size()) < params.max_axes_per_surface && static_cast<int>(remaining.size()) >= params.min_surface_points) {
     Axis axis;
     if (fitVerticalAxis(cloud, remaining, up, params, axis.point, axis.radius)) {
       axis.points = remaining;
@@ -185,7 +177,7 @@ std::vector<Axis> fitVerticalAxes(const Cloud& cloud, const std::vector<int>& po
     // A share of the surface, not a thin curve across it: on a twisted strip the normal lines
     // of a few points per height pass near any vertical line.
     if (static_cast<int>(best_inliers.size()) < params.min_surface_points ||
-        best_inliers.size() < kMinAxisShare * remaining.size()) {
+        best_inliers.size() < params.min_axis_share * remaining.size()) {
       break;
     }
     if (!coversAnArc(cloud, best_inliers, up, params)) break;
@@ -208,23 +200,33 @@ float distanceFromAxis(const Eigen::Vector3f& p, const Axis& axis, const Eigen::
 
 /// Whether p lies on the surface of revolution of another axis and not on that of `axis`.
 bool onAnotherRoundSurface(const Eigen::Vector3f& p, const Axis& axis, const std::vector<Axis>& other_axes,
-                           const Eigen::Vector3f& up) {
-  if (std::fabs(distanceFromAxis(p, axis, up) - axis.radius) < kLandingRadius) return false;
+                           const Eigen::Vector3f& up, float tolerance) {
+  if (std::fabs(distanceFromAxis(p, axis, up) - axis.radius) < tolerance) return false;
   for (const Axis& other : other_axes) {
     if (&other == &axis) continue;
-    if (std::fabs(distanceFromAxis(p, other, up) - other.radius) < kLandingRadius &&
-        (other.point - axis.point).norm() > kLandingRadius) {
+    if (std::fabs(distanceFromAxis(p, other, up) - other.radius) < tolerance &&
+        (other.point - axis.point).norm() > tolerance) {
       return true;
     }
   }
   return false;
 }
 
+/// How a reflection counts when orienting a plane through an axis. Every plane through a true
+/// axis is a symmetry, so what decides is contradiction (reflections into free space: a mug's
+/// handle mirrored beside it); matches only break ties, else the bisector of whatever arc the
+/// views happened to cover would win.
+float reflectionScore(const ReflectionEvidence& evidence, const UprightHypothesisParams& params) {
+  if (evidence.landing == ReflectionLanding::OnPoint) return params.match_tie_break * evidence.foreground_strength;
+  return evidence.landing == ReflectionLanding::Free ? -evidence.cost_foreground : 0.0f;
+}
+
 /// The vertical plane through the axis under which the scene points around it (the object the
 /// surface belongs to, as far as it was seen) are best explained by their reflections. A surface
 /// is often only a strip of its object, so the strip alone would pick its own bisector.
-SymmetryHypothesis bestPlaneThroughAxis(const Cloud& cloud, const ReflectionScore& score, const Axis& axis,
-                                        const std::vector<Axis>& other_axes, const Eigen::Vector3f& up) {
+SymmetryHypothesis bestPlaneThroughAxis(const SceneEvidence& evidence, const UprightHypothesisParams& params,
+                                        const Axis& axis, const std::vector<Axis>& other_axes, const Eigen::Vector3f& up) {
+  const Cloud& cloud = evidence.cloud();
   const std::vector<int>& surface = axis.points;
   const Eigen::Vector3f& axis_point = axis.point;
   const float axis_radius = axis.radius;
@@ -237,9 +239,9 @@ SymmetryHypothesis bestPlaneThroughAxis(const Cloud& cloud, const ReflectionScor
     low = std::min(low, height);
     high = std::max(high, height);
   }
-  low -= kColumnMargin;
-  high += kColumnMargin;
-  const float reach = 1.2f * axis_radius + kLandingRadius;
+  low -= params.column_height_margin;
+  high += params.column_height_margin;
+  const float reach = 1.2f * axis_radius + params.surface_tolerance;
   std::vector<int> around;
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     Eigen::Vector3f offset = cloud.points[i].getVector3fMap() - axis_point;
@@ -249,7 +251,7 @@ SymmetryHypothesis bestPlaneThroughAxis(const Cloud& cloud, const ReflectionScor
     if (offset.squaredNorm() >= reach * reach) continue;
     // A touching round neighbour's side is its own business: its axis would tilt the choice
     // toward the plane through both axes, and the cut would take both objects.
-    if (onAnotherRoundSurface(cloud.points[i].getVector3fMap(), axis, other_axes, up)) continue;
+    if (onAnotherRoundSurface(cloud.points[i].getVector3fMap(), axis, other_axes, up, params.surface_tolerance)) continue;
     around.push_back(static_cast<int>(i));
   }
   const Eigen::Vector3f helper = std::fabs(up.x()) < 0.9f ? Eigen::Vector3f::UnitX() : Eigen::Vector3f::UnitY();
@@ -259,12 +261,12 @@ SymmetryHypothesis bestPlaneThroughAxis(const Cloud& cloud, const ReflectionScor
   // the seen arc matches, a handle it mirrors into free space rules it out.
   std::vector<SymmetryHypothesis> planes;
   std::vector<float> contradiction, agreement;
-  for (int k = 0; k < kAxisPlaneAngles; ++k) {
-    const float angle = static_cast<float>(M_PI) * static_cast<float>(k) / kAxisPlaneAngles;
+  for (int k = 0; k < params.axis_plane_angles; ++k) {
+    const float angle = static_cast<float>(M_PI) * static_cast<float>(k) / params.axis_plane_angles;
     planes.push_back(verticalPlane(axis_point, std::cos(angle) * e1 + std::sin(angle) * e2, up, support));
     float against = 0.0f, for_it = 0.0f;
     for (int i : around) {
-      const float s = score(i, planes.back().plane);
+      const float s = reflectionScore(evidence.reflection(i, planes.back().plane), params);
       (s < 0.0f ? against : for_it) += s;
     }
     contradiction.push_back(-against);
@@ -272,8 +274,8 @@ SymmetryHypothesis bestPlaneThroughAxis(const Cloud& cloud, const ReflectionScor
   }
   const float least = *std::min_element(contradiction.begin(), contradiction.end());
   int best = -1;
-  for (int k = 0; k < kAxisPlaneAngles; ++k) {
-    if (contradiction[k] > least + kContradictionTolerance) continue;
+  for (int k = 0; k < params.axis_plane_angles; ++k) {
+    if (contradiction[k] > least + params.contradiction_tolerance) continue;
     if (best < 0 || agreement[k] > agreement[best]) best = k;
   }
   return planes[best];
@@ -281,23 +283,9 @@ SymmetryHypothesis bestPlaneThroughAxis(const Cloud& cloud, const ReflectionScor
 
 }  // namespace
 
-ReflectionScore landingScore(const Cloud& cloud) {
-  // The closure owns what it needs: it may outlive the caller's cloud.
-  auto positions = std::make_shared<std::vector<Eigen::Vector3f>>();
-  positions->reserve(cloud.size());
-  for (const auto& p : cloud.points) positions->push_back(p.getVector3fMap());
-  auto grid = std::make_shared<const PointGrid>(cloud, kLandingRadius);
-  return [positions, grid](int index, const SymmetryPlane& plane) {
-    const Eigen::Vector3f reflected = reflectPoint(plane, (*positions)[index]);
-    bool hit = false;
-    grid->forEachWithin(reflected, kLandingRadius, [&](int, float) { hit = true; });
-    return hit ? 1.0f : 0.0f;
-  };
-}
-
-std::vector<SymmetryHypothesis> uprightHypotheses(const Cloud& cloud, const std::vector<int>& labels,
-                                                  const Eigen::Vector3f& up, const UprightHypothesisParams& params,
-                                                  const ReflectionScore& score) {
+std::vector<SymmetryHypothesis> uprightHypotheses(const SceneEvidence& evidence, const std::vector<int>& labels,
+                                                  const Eigen::Vector3f& up, const UprightHypothesisParams& params) {
+  const Cloud& cloud = evidence.cloud();
   int max_label = 0;
   for (int label : labels) max_label = std::max(max_label, label);
   std::vector<Surface> surfaces(max_label + 1);
@@ -351,7 +339,7 @@ std::vector<SymmetryHypothesis> uprightHypotheses(const Cloud& cloud, const std:
   // Any vertical plane through an axis is a symmetry plane of a surface of revolution; the one
   // that maps most of the seen part of the object onto itself bisects what was seen.
   for (const Axis& axis : axes) {
-    result.push_back(bestPlaneThroughAxis(cloud, score, axis, axes, up));
+    result.push_back(bestPlaneThroughAxis(evidence, params, axis, axes, up));
     result.back().anchor = axis.points;
   }
   return result;
@@ -370,6 +358,17 @@ void appendDistinctHypotheses(std::vector<SymmetryHypothesis>& base, const std::
     }
     if (!known) base.push_back(candidate);
   }
+}
+
+void UprightStage::run(PipelineState& state) const {
+  std::size_t added = 0;
+  if (state.up) {
+    const std::size_t before = state.hypotheses.size();
+    appendDistinctHypotheses(state.hypotheses, uprightHypotheses(*state.evidence, state.surfaces, *state.up, params_),
+                             params_.distinct_angle_deg, params_.distinct_distance);
+    added = state.hypotheses.size() - before;
+  }
+  state.count("hypotheses", added);
 }
 
 }  // namespace symmetry_segmentation

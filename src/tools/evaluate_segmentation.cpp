@@ -12,6 +12,7 @@
 #include <boost/filesystem.hpp>
 
 #include "symmetry_segmentation/errors.h"
+#include "symmetry_segmentation/evaluation/ablation.h"
 #include "symmetry_segmentation/evaluation/evaluation_csv.h"
 #include "symmetry_segmentation/evaluation/evaluation_inputs.h"
 #include "symmetry_segmentation/evaluation/evaluation_summary.h"
@@ -61,6 +62,13 @@ Options:
                         marked (needs /usr/bin/python3 with matplotlib).
   --sigma S             IoU threshold of the plot and of each method's best sweep value
                         (default 0.9).
+  --ablate              Run the symmetry method with its full stage list (symmetry.stages of
+                        --config) and once without each stage the list can run without; print
+                        per data set (each <scene_dir> argument is one; it may also be a scene
+                        without labels, e.g. a real scan, where segment counts are reported)
+                        P, R, F at --sigma and the change against the full list, and each
+                        stage's median time. Not combinable with --method, --sweep, --segments,
+                        --csv or --plot.
   --plot-script PATH    plot_precision_recall.py to use. Default: $SYMSEG_ROOT/scripts/, else
                         beside this executable, else found walking up from this executable's
                         real path (<dir>/scripts/ or <dir>/src/symmetry_segmentation/scripts/).
@@ -83,6 +91,7 @@ struct Options {
   std::string plot_script;
   double sigma = 0.9;
   bool help = false;
+  bool ablate = false;
 };
 
 double parseSigma(const std::string& text) {
@@ -101,6 +110,10 @@ Options parseArguments(int argc, char** argv) {
     std::string argument = argv[i];
     if (argument == "-h" || argument == "--help") {
       options.help = true;
+      continue;
+    }
+    if (argument == "--ablate") {
+      options.ablate = true;
       continue;
     }
     if (argument.rfind("--", 0) != 0) {
@@ -272,6 +285,57 @@ void writePlot(const Options& options, const std::string& script,
   if (temporary) fs::remove(csv_path);
 }
 
+/// --ablate: the full stage list and the list without each stage, per data set (ablation.h).
+int runAblation(const Options& options) {
+  if (!options.segments_dirs.empty() || !options.sweeps.empty() || !options.csv_path.empty() ||
+      !options.plot_path.empty()) {
+    throw ss::InputError("--ablate", "cannot be combined with --segments, --sweep, --csv or --plot");
+  }
+  for (const std::string& method : options.methods) {
+    if (method != "symmetry") throw ss::InputError("--ablate", "ablates the stages of the symmetry method only");
+  }
+  const ss::SegmentationConfig base =
+      options.config_path.empty() ? ss::SegmentationConfig{} : ss::loadConfigFile(options.config_path);
+  const std::vector<ss::AblationVariant> variants = ss::ablationVariants(base.symmetry.stages);
+  std::vector<std::unique_ptr<ss::Segmenter>> segmenters;
+  for (const ss::AblationVariant& variant : variants) {
+    ss::SegmentationConfig config = base;
+    config.symmetry.stages = variant.stages;
+    segmenters.push_back(ss::makeSegmenter("symmetry", config));
+  }
+  std::vector<std::vector<std::string>> data_sets;
+  for (const std::string& argument : options.scene_arguments) data_sets.push_back(ss::findDataSetScenes(argument));
+
+  for (std::size_t d = 0; d < data_sets.size(); ++d) {
+    ss::DataSetAblation ablation;
+    ablation.name = fs::path(options.scene_arguments[d]).lexically_normal().filename().string();
+    if (ablation.name.empty() || ablation.name == ".") ablation.name = options.scene_arguments[d];
+    ablation.variants = variants;
+    ablation.totals.resize(variants.size());
+    for (const std::string& scene_dir : data_sets[d]) {
+      const ss::Scene scene = ss::loadScene(scene_dir);
+      ++ablation.scenes;
+      ablation.labelled = ablation.labelled && scene.hasLabels();
+      for (std::size_t v = 0; v < variants.size(); ++v) {
+        ss::SegmentationResult result;
+        try {
+          result = segmenters[v]->segment(scene);
+        } catch (const ss::InputError& error) {
+          throw ss::InputError(scene_dir, error.what());
+        }
+        ablation.totals[v].segments += result.segments.size();
+        if (scene.hasLabels()) {
+          ablation.totals[v].counts += ss::countMatches(ss::computeOverlap(scene.labels, result.segments), options.sigma);
+        }
+        if (v == 0) ss::addStageTimes(ablation, base.symmetry.stages, result.timing_ms);
+      }
+      std::cerr << scene.name << ": " << variants.size() << " stage lists\n";
+    }
+    ss::printAblationTable(ablation, options.sigma, std::cout);
+  }
+  return 0;
+}
+
 int run(int argc, char** argv) {
   const Options options = parseArguments(argc, argv);
   if (options.help) {
@@ -280,6 +344,7 @@ int run(int argc, char** argv) {
   }
   if (options.scene_arguments.empty())
     throw ss::InputError("no scene directories given (see --help)");
+  if (options.ablate) return runAblation(options);
   if (!options.segments_dirs.empty() && (!options.methods.empty() || !options.sweeps.empty()))
     throw ss::InputError("--segments", "cannot be combined with --method or --sweep");
 

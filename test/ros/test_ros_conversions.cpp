@@ -516,7 +516,7 @@ TEST(Parameters, NestedNamespacesSetTheSameKeysAsTheYamlFile) {
   XmlRpc::XmlRpcValue parameters;
   parameters["symmetry"]["filter"]["s_occl"] = 0.97;
   parameters["symmetry"]["filter"]["min_segment_points"] = 55;
-  parameters["symmetry"]["refinement"]["enabled"] = false;
+  parameters["symmetry"]["curves"]["min_curve_points"] = 7;
   parameters["preprocessing"]["voxel_size"] = 0.02;
   parameters["mode"] = "on_demand";  // interface parameters are the node's, not the core's
   parameters["fixed_frame"] = "map";
@@ -525,12 +525,12 @@ TEST(Parameters, NestedNamespacesSetTheSameKeysAsTheYamlFile) {
   EXPECT_EQ(loaded.values, 4u);
   EXPECT_FLOAT_EQ(loaded.config.symmetry.filter.s_occl, 0.97f);
   EXPECT_EQ(loaded.config.symmetry.filter.min_segment_points, 55);
-  EXPECT_FALSE(loaded.config.symmetry.refinement.enabled);
+  EXPECT_EQ(loaded.config.symmetry.curves.min_curve_points, 7);
   EXPECT_FLOAT_EQ(loaded.config.preprocessing.voxel_size, 0.02f);
   // The same as the YAML file with those values.
   const auto from_yaml = ss::configWithValues(ss::SegmentationConfig(), {{"symmetry.filter.s_occl", "0.97"},
                                                                          {"symmetry.filter.min_segment_points", "55"},
-                                                                         {"symmetry.refinement.enabled", "false"},
+                                                                         {"symmetry.curves.min_curve_points", "7"},
                                                                          {"preprocessing.voxel_size", "0.02"}});
   for (const auto& info : ss::parameterSchema()) {
     EXPECT_EQ(ss::configValueText(loaded.config, info.key), ss::configValueText(from_yaml, info.key)) << info.key;
@@ -566,6 +566,25 @@ TEST(Parameters, UnknownNamesAreProblemsNamedTheRosWay) {
   EXPECT_TRUE(mentions(loaded.problems, "~sesnor_frame"));
   EXPECT_FLOAT_EQ(loaded.config.symmetry.filter.s_smooth, ss::SegmentationConfig().symmetry.filter.s_smooth)
       << "rejected as a whole";
+}
+
+TEST(Parameters, AListParameterIsAYamlList) {
+  // symmetry.stages (a string_list) from `rosparam load` arrives as an XmlRpc array.
+  XmlRpc::XmlRpcValue parameters;
+  const std::vector<std::string> stages = ss::SegmentationConfig().symmetry.stages;
+  ASSERT_GT(stages.size(), 2u);
+  const std::vector<std::string> fewer(stages.begin(), stages.end() - 1);
+  for (std::size_t i = 0; i < fewer.size(); ++i) parameters["symmetry"]["stages"][static_cast<int>(i)] = fewer[i];
+  ASSERT_EQ(stages.back(), "object_bottoms");  // a stage the list can run without
+  const auto loaded = ss::algorithmParameters(parameters, {});
+  EXPECT_TRUE(loaded.problems.empty()) << loaded.problems.front();
+  EXPECT_EQ(loaded.config.symmetry.stages, fewer);
+  XmlRpc::XmlRpcValue bad;
+  bad["symmetry"]["stages"][0] = "no_such_stage";
+  const auto rejected = ss::algorithmParameters(bad, {});
+  ASSERT_FALSE(rejected.problems.empty());
+  EXPECT_TRUE(mentions(rejected.problems, "no_such_stage")) << rejected.problems.front();
+  EXPECT_EQ(rejected.config.symmetry.stages, stages);
 }
 
 TEST(Parameters, ValuesBecomeYamlTextOfTheirType) {

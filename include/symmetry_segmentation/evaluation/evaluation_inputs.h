@@ -11,6 +11,11 @@ namespace symmetry_segmentation {
 /// argument when it does not exist or yields no labelled scene.
 std::vector<std::string> findSceneDirectories(const std::vector<std::string>& arguments);
 
+/// The scenes of one data set: the argument itself when it is a scene (a cloud file, or a
+/// directory holding labels.txt or a cloud file), else its subdirectories holding labels.txt
+/// (sorted). Throws InputError naming the argument when there is none.
+std::vector<std::string> findDataSetScenes(const std::string& argument);
+
 /// `directory`/<scene>/segments.json, else `directory`/<scene>.json. Throws InputError when
 /// neither exists.
 std::string findSegmentsFile(const std::string& directory, const std::string& scene_name);

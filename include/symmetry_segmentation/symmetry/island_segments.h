@@ -1,32 +1,38 @@
 #pragma once
-// Stage 5a (our addition): objects standing apart, checked by their symmetry.
-//
+// Stage 11, island_segments (our addition): objects standing apart, checked by their symmetry.
 // The graph cut finds an object as the points its plane explains; where that plane is a few
-// degrees off, or is one arm's plane rather than the whole object's, the cut returns pieces
-// (an L-shaped block's arm, a mug without its handle). An island - points no closer than a gap to
-// any other point above the table - is often exactly one object, and the planes the cuts found
-// on it say whether it is one: an island that one of them explains as a whole (it passes the
-// same filter as every segment) is proposed as a segment too, and deduplication then prefers it
-// to its pieces (its boundary, a gap all round, is the cleanest there is). An island of two
-// objects that no plane explains together is not proposed.
-#include <functional>
+// degrees off, or is one arm's plane rather than the whole object's, the cut returns pieces (an
+// L-shaped block's arm, a mug without its handle). An island (islands.h) that one of the found
+// planes explains as a whole (it passes the same filter as every segment) is added as a segment
+// too, and deduplication then prefers it to its pieces. An island of two objects that no plane
+// explains together is not added.
 #include <vector>
 
-#include "symmetry_segmentation/scene.h"
-#include "symmetry_segmentation/symmetry/composite_segments.h"
+#include "symmetry_segmentation/symmetry/scene_evidence.h"
 #include "symmetry_segmentation/symmetry/segment_filter.h"
+#include "symmetry_segmentation/symmetry/stage.h"
+#include "symmetry_segmentation/symmetry/symmetry_params.h"
 
 namespace symmetry_segmentation {
 
-/// Groups of cloud points linked through points closer than `gap` to each other (Euclidean
-/// clusters), each sorted, of at least `min_points`.
-std::vector<std::vector<int>> spatialIslands(const Cloud::ConstPtr& cloud, float gap, int min_points);
-
 /// For each island: the plane among `segments`' planes (of segments lying mostly on the island
-/// and covering a good share of it)
-/// under which the island scores best; the island with that plane when it passes `filter`.
+/// and covering a good share of it) under which the island scores best; the island with that
+/// plane when it passes `filter`.
 std::vector<CandidateSegment> explainedIslands(const std::vector<std::vector<int>>& islands,
                                                const std::vector<CandidateSegment>& segments,
-                                               const SegmentScorer& score, const SymmetryFilterParams& filter);
+                                               const SceneEvidence& evidence, const SymmetryFilterParams& filter,
+                                               const IslandSegmentParams& params);
+
+/// The stage: the explained islands (planes from every candidate) appended to the segments.
+class IslandSegmentStage : public Stage {
+ public:
+  IslandSegmentStage(const IslandSegmentParams& params, const SymmetryFilterParams& filter)
+      : params_(params), filter_(filter) {}
+  void run(PipelineState& state) const override;
+
+ private:
+  IslandSegmentParams params_;
+  SymmetryFilterParams filter_;
+};
 
 }  // namespace symmetry_segmentation

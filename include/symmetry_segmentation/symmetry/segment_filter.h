@@ -1,9 +1,13 @@
 #pragma once
-// Stage 5: keep the segments that look like whole symmetric objects, once each.
+// Stage 10, filter (paper eq. 13-14): the candidates that look like whole symmetric objects
+// become the segments - their reflections explained (occlusion score above s_occl: few land in
+// free space) and their boundary at creases (smoothness score below s_smooth: few smooth links
+// cut). The same test judges every segment the later stages make.
 
 #include <vector>
 
 #include "symmetry_segmentation/segmentation_result.h"
+#include "symmetry_segmentation/symmetry/stage.h"
 #include "symmetry_segmentation/symmetry/symmetry_params.h"
 
 namespace symmetry_segmentation {
@@ -12,17 +16,20 @@ struct CandidateSegment {
   std::vector<int> points;  ///< Working-cloud indices, sorted.
   SymmetryPlane plane;
   SegmentScores scores;
+  std::vector<int> extra_input_points;  ///< Input points beyond its voxels' (object bottoms), sorted.
 };
 
 /// Occlusion score above s_occl, smoothness score below s_smooth, at least min_segment_points.
 bool passesFilter(const CandidateSegment& segment, const SymmetryFilterParams& params);
 
-/// Intersection over the smaller of two sorted index sets (0 when either is empty).
-float overlapOfSmaller(const std::vector<int>& a, const std::vector<int>& b);
+/// The stage: the segments become the candidates that pass the filter.
+class FilterStage : public Stage {
+ public:
+  explicit FilterStage(const SymmetryFilterParams& params) : params_(params) {}
+  void run(PipelineState& state) const override;
 
-/// Among segments overlapping by more than duplicate_overlap (of the smaller one), keeps the one
-/// with the cleanest boundary (lowest smoothness score, then the larger, then the earlier).
-std::vector<CandidateSegment> removeDuplicates(std::vector<CandidateSegment> segments,
-                                               const SymmetryFilterParams& params);
+ private:
+  SymmetryFilterParams params_;
+};
 
 }  // namespace symmetry_segmentation

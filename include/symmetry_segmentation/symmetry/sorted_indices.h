@@ -35,6 +35,13 @@ inline std::vector<int> difference(const std::vector<int>& a, const std::vector<
   return rest;
 }
 
+inline std::vector<int> setUnion(const std::vector<int>& a, const std::vector<int>& b) {
+  std::vector<int> all;
+  all.reserve(a.size() + b.size());
+  std::set_union(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(all));
+  return all;
+}
+
 /// Position of `value` in `sorted`, or -1 if it is not there.
 inline int positionIn(const std::vector<int>& sorted, int value) {
   const auto it = std::lower_bound(sorted.begin(), sorted.end(), value);

@@ -1,9 +1,11 @@
 #pragma once
-// Stage 3 and the stage-5 scores: for one symmetry plane, which working-cloud points belong to
-// the symmetric object (graph cut, paper eq. 7-12), and how plausible a segment is (eq. 13-14).
-// The kd-tree, the smoothness graph and the point grid for reflection queries are built once per
-// scene and shared by every hypothesis;
-// segment() and scores() are const and safe to call from several threads.
+// Stage 4, cut (paper eq. 7-12): for each hypothesis not cut yet, the working-cloud points that
+// belong to the object symmetric about its plane, by a graph cut over the 1 cm cloud (data term
+// from where each point's reflection lands, convexity-weighted smoothness, symmetric-neighbour
+// links), and the candidate's scores (eq. 13-14, segment_scores.cpp). The kd-tree, the
+// smoothness graph and the point grid for reflection queries are built once per scene and
+// shared by every hypothesis; segment() and scores() are const and safe to call from several
+// threads, so hypotheses are cut in parallel and stored by index (any thread count, same result).
 
 #include <memory>
 #include <optional>
@@ -18,6 +20,7 @@
 #include "symmetry_segmentation/segmentation_result.h"
 #include "symmetry_segmentation/symmetry/point_grid.h"
 #include "symmetry_segmentation/symmetry/reflection_data_term.h"
+#include "symmetry_segmentation/symmetry/stage.h"
 #include "symmetry_segmentation/symmetry/symmetry_params.h"
 
 namespace symmetry_segmentation {
@@ -65,6 +68,17 @@ class SymmetricGraphCut {
   PointGrid grid_;                        ///< Reflection queries (faster than tree_ for them).
 
   ReflectionDataTerm dataTermView() const;
+};
+
+/// The stage: a candidate per hypothesis not cut yet (scored when it has the filter's
+/// min_segment_points).
+class GraphCutStage : public Stage {
+ public:
+  explicit GraphCutStage(const SymmetryFilterParams& filter) : filter_(filter) {}
+  void run(PipelineState& state) const override;
+
+ private:
+  SymmetryFilterParams filter_;
 };
 
 }  // namespace symmetry_segmentation

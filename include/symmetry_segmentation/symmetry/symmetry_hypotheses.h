@@ -1,10 +1,14 @@
 #pragma once
-// Stage 2: candidate symmetry planes from pairs of curves, clustered by mean shift.
+// Stage 2, curve_pairs (paper): every pair of curves is matched point by point
+// (one-to-one, reflected tangents within 6 degrees); each matched pair's bisector is a plane
+// sample, the samples of a curve pair are mean-shift clustered, and near-equal planes of
+// different pairs merged. The planes are the hypotheses the graph cut tries.
 
 #include <vector>
 
 #include "symmetry_segmentation/segmentation_result.h"
 #include "symmetry_segmentation/symmetry/normal_edge_curves.h"
+#include "symmetry_segmentation/symmetry/stage.h"
 
 namespace symmetry_segmentation {
 
@@ -30,11 +34,21 @@ std::vector<SymmetryHypothesis> meanShiftPlanes(const std::vector<PlaneSample>& 
 /// One-to-one point matches between two curves (or a curve and itself) whose reflected tangents
 /// agree; returns the plane of each surviving pair.
 std::vector<PlaneSample> matchCurvePair(const Cloud& cloud, const Curve& a, const Curve& b,
-                                        const SymmetryDetectionParams& params);
+                                        const CurvePairParams& params);
 
-/// Stage 2 over all curve pairs: per pair the mean-shift plane, then near-equal planes merged.
+/// Over all curve pairs: per pair the mean-shift plane, then near-equal planes merged.
 /// Strongest first, at most params.max_hypotheses.
 std::vector<SymmetryHypothesis> detectSymmetryHypotheses(const Cloud& cloud, const std::vector<Curve>& curves,
-                                                         const SymmetryDetectionParams& params);
+                                                         const CurvePairParams& params);
+
+/// The stage: the curve-pair planes appended to the state's hypotheses.
+class CurvePairStage : public Stage {
+ public:
+  explicit CurvePairStage(const CurvePairParams& params) : params_(params) {}
+  void run(PipelineState& state) const override;
+
+ private:
+  CurvePairParams params_;
+};
 
 }  // namespace symmetry_segmentation

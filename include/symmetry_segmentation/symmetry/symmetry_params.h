@@ -1,66 +1,133 @@
 #pragma once
-// Parameters of the symmetry method (Ecins et al., ICRA 2016). Defaults are the paper's values
-// where it gives them ("(paper)" in the docs); the others are documented choices. Each struct's
-// parameters are declared once, in its describeParameters (parameter_schema.h).
+// Parameters of the symmetry method (Ecins et al., ICRA 2016), one struct per stage in the order
+// the default list runs them (symmetry.stages), each declared once in its describeParameters
+// (parameter_schema.h): key, range, unit, doc; the default is the member's initializer.
+// Defaults are the paper's values where it gives them ("(paper)"); the others are our choices.
+// Constants that are no tunable of the method (numerical limits, sampling resolutions that a
+// parameter's meaning fixes) stay in the code, each with the reason.
+
+#include <string>
+#include <vector>
 
 #include "symmetry_segmentation/parameter_schema.h"
 
 namespace symmetry_segmentation {
 
-/// Stage 1-2: normal-edge curves and symmetry hypotheses.
-struct SymmetryDetectionParams {
+/// Stage curves: normal-edge curves (paper).
+struct NormalEdgeCurveParams {
   float supervoxel_voxel = 0.01f;
   float supervoxel_seed = 0.03f;
   float merge_normal_angle_deg = 12.0f;
+  float curved_merge_angle_deg = 30.0f;
   float boundary_radius = 0.015f;
   float curve_link_radius = 0.02f;
   int min_curve_points = 6;
   int tangent_half_window = 2;
+  float min_edge_angle_deg = 20.0f;
+};
+
+inline void describeParameters(ParameterList<NormalEdgeCurveParams>& list) {
+  using P = NormalEdgeCurveParams;
+  list.add("supervoxel_voxel", &P::supervoxel_voxel, 0.002, 0.1, "m", "supervoxel voxel size")
+      .add("supervoxel_seed", &P::supervoxel_seed, 0.005, 0.5, "m", "supervoxel seed spacing")
+      .add("merge_normal_angle_deg", &P::merge_normal_angle_deg, 0.1, 180.0, "deg",
+           "touching supervoxels whose mean normals differ less are merged into one surface")
+      .add("curved_merge_angle_deg", &P::curved_merge_angle_deg, 0.1, 180.0, "deg",
+           "...or whose normals agree where they touch and whose mean normals differ less (curved surfaces)")
+      .add("boundary_radius", &P::boundary_radius, 0.001, 0.2, "m",
+           "a point is a boundary point if another merged surface lies within this radius")
+      .add("curve_link_radius", &P::curve_link_radius, 0.001, 0.2, "m", "longest spanning-tree edge inside one curve")
+      .add("min_curve_points", &P::min_curve_points, 1, 10000, "points", "shorter curves are dropped")
+      .add("tangent_half_window", &P::tangent_half_window, 1, 100, "points",
+           "tangent from +-this many neighbours along the curve")
+      .add("min_edge_angle_deg", &P::min_edge_angle_deg, 0.1, 90.0, "deg",
+           "where the surfaces meet at more than this, the tangent is their edge direction")
+      .rule([](const P& p) { return p.supervoxel_seed > p.supervoxel_voxel ? "" : "needs supervoxel_voxel < supervoxel_seed"; });
+}
+
+/// Stage curve_pairs: planes from matched curve pairs (paper).
+struct CurvePairParams {
   float max_tangent_angle_deg = 6.0f;
   float min_match_distance = 0.02f;
   float max_match_distance = 0.40f;
   float mean_shift_angle_deg = 5.0f;
   float mean_shift_distance = 0.01f;
+  int min_pair_support = 3;
   int min_plane_support = 4;
   float merge_plane_angle_deg = 6.0f;
   float merge_plane_distance = 0.015f;
   int max_hypotheses = 80;
-  bool upright_hypotheses = true;
 };
 
-inline void describeParameters(ParameterList<SymmetryDetectionParams>& list) {
-  using P = SymmetryDetectionParams;
-  list.add("supervoxel_voxel", &P::supervoxel_voxel, 0.002, 0.1, "m", "supervoxel voxel size")
-      .add("supervoxel_seed", &P::supervoxel_seed, 0.005, 0.5, "m", "supervoxel seed spacing")
-      .add("merge_normal_angle_deg", &P::merge_normal_angle_deg, 0.1, 180.0, "deg",
-           "adjacent supervoxels with normals closer than this are merged")
-      .add("boundary_radius", &P::boundary_radius, 0.001, 0.2, "m",
-           "a point is a boundary point if another merged segment lies within this radius")
-      .add("curve_link_radius", &P::curve_link_radius, 0.001, 0.2, "m", "longest spanning-tree edge inside one curve")
-      .add("min_curve_points", &P::min_curve_points, 1, 10000, "points", "shorter curves are dropped")
-      .add("tangent_half_window", &P::tangent_half_window, 1, 100, "points",
-           "tangent from +-this many neighbours along the curve")
-      .add("max_tangent_angle_deg", &P::max_tangent_angle_deg, 0.1, 180.0, "deg",
-           "reflected vs. matched tangent (paper)")
+inline void describeParameters(ParameterList<CurvePairParams>& list) {
+  using P = CurvePairParams;
+  list.add("max_tangent_angle_deg", &P::max_tangent_angle_deg, 0.1, 180.0, "deg", "reflected vs. matched tangent (paper)")
       .add("min_match_distance", &P::min_match_distance, 0.0, 1.0, "m", "point pairs closer than this define no plane")
-      .add("max_match_distance", &P::max_match_distance, 0.01, 5.0, "m",
-           "...nor pairs farther apart than any object")
+      .add("max_match_distance", &P::max_match_distance, 0.01, 5.0, "m", "...nor pairs farther apart than any object")
       .add("mean_shift_angle_deg", &P::mean_shift_angle_deg, 0.1, 180.0, "deg", "mean-shift bandwidth on the plane normal")
       .add("mean_shift_distance", &P::mean_shift_distance, 0.001, 0.5, "m", "mean-shift bandwidth on the plane offset")
-      .add("min_plane_support", &P::min_plane_support, 1, 100000, "pairs", "matched point pairs a plane needs")
+      .add("min_pair_support", &P::min_pair_support, 1, 100000, "pairs",
+           "matched point pairs a plane of one curve pair needs (a short curve has ~10 points)")
+      .add("min_plane_support", &P::min_plane_support, 1, 100000, "pairs",
+           "matched point pairs a plane needs once merged across curve pairs")
       .add("merge_plane_angle_deg", &P::merge_plane_angle_deg, 0.1, 180.0, "deg",
            "near-equal planes from different curve pairs are merged...")
       .add("merge_plane_distance", &P::merge_plane_distance, 0.001, 0.5, "m", "...when their offsets differ less")
-      .add("max_hypotheses", &P::max_hypotheses, 1, 10000, "", "strongest curve hypotheses kept")
-      .add("upright_hypotheses", &P::upright_hypotheses,
-           "also vertical planes from single surfaces and object footprints (needs the table plane)")
-      .rule([](const P& p) { return p.supervoxel_seed > p.supervoxel_voxel ? "" : "needs supervoxel_voxel < supervoxel_seed"; })
+      .add("max_hypotheses", &P::max_hypotheses, 1, 10000, "", "strongest curve-pair planes kept")
       .rule([](const P& p) {
         return p.max_match_distance > p.min_match_distance ? "" : "needs min_match_distance < max_match_distance";
       });
 }
 
-/// Stage 3: graph cut per hypothesis (paper eq. 7-12).
+/// Stage upright: vertical planes proposed by single surfaces (upright_hypotheses.h).
+struct UprightHypothesisParams {
+  int min_surface_points = 20;
+  float flat_curvature = 0.02f;
+  float flat_normal_spread_deg = 10.0f;
+  float face_tilt_deg = 20.0f;
+  float max_axis_residual = 0.01f;
+  float max_axis_radius = 0.25f;
+  float min_normal_spread_deg = 20.0f;
+  int max_axes_per_surface = 3;
+  float min_axis_share = 0.3f;
+  int axis_plane_angles = 24;
+  float column_height_margin = 0.02f;
+  float surface_tolerance = 0.01f;
+  float contradiction_tolerance = 1.0f;
+  float match_tie_break = 0.05f;
+  float distinct_angle_deg = 6.0f;
+  float distinct_distance = 0.015f;
+};
+
+inline void describeParameters(ParameterList<UprightHypothesisParams>& list) {
+  using P = UprightHypothesisParams;
+  list.add("min_surface_points", &P::min_surface_points, 1, 100000, "points", "smaller merged surfaces propose nothing")
+      .add("flat_curvature", &P::flat_curvature, 0.0, 1.0, "", "surfaces with less PCA curvature propose face planes")
+      .add("flat_normal_spread_deg", &P::flat_normal_spread_deg, 0.1, 90.0, "deg",
+           "surfaces whose normals spread more propose an axis plane")
+      .add("face_tilt_deg", &P::face_tilt_deg, 0.1, 90.0, "deg", "faces within this of vertical / horizontal propose planes")
+      .add("max_axis_residual", &P::max_axis_residual, 0.0001, 0.1, "m", "RMS distance of normal lines from the fitted axis")
+      .add("max_axis_radius", &P::max_axis_radius, 0.01, 2.0, "m", "farther axes are not an object's")
+      .add("min_normal_spread_deg", &P::min_normal_spread_deg, 0.1, 180.0, "deg",
+           "normals must turn by about this around an axis to locate it")
+      .add("max_axes_per_surface", &P::max_axes_per_surface, 1, 20, "",
+           "axes sought in one surface (touching round objects merge into one)")
+      .add("min_axis_share", &P::min_axis_share, 0.0, 1.0, "", "an axis explains at least this share of its surface")
+      .add("axis_plane_angles", &P::axis_plane_angles, 2, 360, "", "orientations tried for a plane through an axis")
+      .add("column_height_margin", &P::column_height_margin, 0.0, 0.5, "m",
+           "the points scored around an axis reach this far above and below its surface")
+      .add("surface_tolerance", &P::surface_tolerance, 0.0, 0.5, "m",
+           "a point this close to a surface of revolution lies on it; the column also reaches this far beyond 1.2 radii")
+      .add("contradiction_tolerance", &P::contradiction_tolerance, 0.0, 1000.0, "points",
+           "orientations whose free-space contradiction is within this of the least are told apart by matches")
+      .add("match_tie_break", &P::match_tie_break, 0.0, 1.0, "",
+           "weight of a matched reflection against one contradicted by free space, when orienting")
+      .add("distinct_angle_deg", &P::distinct_angle_deg, 0.1, 180.0, "deg",
+           "an upright plane within this angle...")
+      .add("distinct_distance", &P::distinct_distance, 0.001, 0.5, "m", "...and offset of a plane already proposed is not added");
+}
+
+/// Stage cut: graph cut per hypothesis (paper eq. 7-12); also the data term of every later stage.
 struct SymmetryCutParams {
   float dmax = 0.01f;
   float alpha_min_deg = 15.0f;
@@ -88,31 +155,58 @@ inline void describeParameters(ParameterList<SymmetryCutParams>& list) {
       .rule([](const P& p) { return p.alpha_min_deg < p.alpha_max_deg ? "" : "needs alpha_min_deg < alpha_max_deg"; });
 }
 
-/// Stage 4: refinement of each segment's plane.
+/// Stage refine: ICP of each segment with its reflection, then a second cut (paper).
 struct SymmetryRefinementParams {
-  bool enabled = true;
   int icp_iterations = 20;
   float icp_max_correspondence = 0.03f;
+  float min_normal_cos = 0.7f;
+  float min_matched_fraction = 0.5f;
+  float max_turn_deg = 15.0f;
+  int min_points = 10;
 };
 
 inline void describeParameters(ParameterList<SymmetryRefinementParams>& list) {
   using P = SymmetryRefinementParams;
-  list.add("enabled", &P::enabled, "refine each segment's plane and cut again")
-      .add("icp_iterations", &P::icp_iterations, 0, 10000, "", "ICP iterations of the segment with its reflection")
-      .add("icp_max_correspondence", &P::icp_max_correspondence, 0.001, 0.5, "m", "ICP correspondence distance");
+  list.add("icp_iterations", &P::icp_iterations, 0, 10000, "", "ICP iterations of the segment with its reflection")
+      .add("icp_max_correspondence", &P::icp_max_correspondence, 0.001, 0.5, "m", "ICP correspondence distance")
+      .add("min_normal_cos", &P::min_normal_cos, -1.0, 1.0, "",
+           "mirrored and matched normals with a smaller cosine are different surfaces (0.7: about 45 deg)")
+      .add("min_matched_fraction", &P::min_matched_fraction, 0.0, 1.0, "",
+           "share of the mirrored segment that must find counterparts, else the plane stays")
+      .add("max_turn_deg", &P::max_turn_deg, 0.0, 90.0, "deg",
+           "a refinement turning the plane more found another symmetry: the plane stays")
+      .add("min_points", &P::min_points, 1, 100000, "points", "smaller segments keep their plane");
 }
 
-/// Stage 5: which segments are kept (paper eq. 13-14), and de-duplication.
+/// Stage islands: groups of points apart from all others (island_segments.h, footprint_hypotheses.h).
+struct IslandParams {
+  float gap = 0.015f;
+};
+
+inline void describeParameters(ParameterList<IslandParams>& list) {
+  list.add("gap", &IslandParams::gap, 0.001, 0.2, "m", "points this far from all others start another island");
+}
+
+/// Stage footprints: planes through the footprint of an island nothing covers.
+struct FootprintParams {
+  float max_extent = 0.3f;
+  float min_island_coverage = 0.9f;
+};
+
+inline void describeParameters(ParameterList<FootprintParams>& list) {
+  list.add("max_extent", &FootprintParams::max_extent, 0.01, 5.0, "m",
+           "islands whose footprint is longer are several objects: no planes")
+      .add("min_island_coverage", &FootprintParams::min_island_coverage, 0.0, 1.0, "",
+           "an island a passing segment covers to this share needs no planes");
+}
+
+/// Stage filter: the paper's scores (eq. 13-14) and which candidates are kept; the scores and
+/// thresholds also judge every segment later stages make.
 struct SymmetryFilterParams {
   float s_occl = 0.99f;
   float s_smooth = 0.02f;
   float smooth_normal_angle_deg = 15.0f;
   int min_segment_points = 40;
-  float duplicate_overlap = 0.7f;
-  float seam_crease_angle_deg = 30.0f;
-  float island_gap = 0.015f;
-  float twin_free_fraction = 0.6f;
-  float color_seam_difference = 15.0f;
 };
 
 inline void describeParameters(ParameterList<SymmetryFilterParams>& list) {
@@ -121,29 +215,179 @@ inline void describeParameters(ParameterList<SymmetryFilterParams>& list) {
       .add("s_smooth", &P::s_smooth, 0.0, 1.0, "", "...and whose smoothness score is below this").live()
       .add("smooth_normal_angle_deg", &P::smooth_normal_angle_deg, 0.1, 180.0, "deg",
            "links with closer normals count as smooth")
-      .add("min_segment_points", &P::min_segment_points, 1, 1000000, "points", "in working-cloud points (1 cm voxels)")
-      .add("duplicate_overlap", &P::duplicate_overlap, 0.0, 1.0, "",
-           "overlap (of the smaller) above which two segments are one object")
-      .add("seam_crease_angle_deg", &P::seam_crease_angle_deg, 0.0, 180.0, "deg",
-           "a segment of two found objects meeting at concave links whose normals differ by more is split (0: never)")
-      .add("island_gap", &P::island_gap, 0.0, 0.2, "m",
-           "points this far from all others that a found plane explains whole are proposed as a segment (0: off)")
-      .add("twin_free_fraction", &P::twin_free_fraction, 0.0, 1.0, "",
-           "a segment in pieces its plane mirrors onto each other, this share of midpoints free, is two objects (0: off)")
-      .add("color_seam_difference", &P::color_seam_difference, 0.0, 200.0, "CIELAB",
-           "neighbours closer in colour are one region; a segment of large regions meeting flat is split (0: off)");
+      .add("min_segment_points", &P::min_segment_points, 1, 1000000, "points",
+           "smaller segments, islands and parts are no objects (working-cloud points, 1 cm voxels)");
+}
+
+/// Stage island_segments: an island one found plane explains whole.
+struct IslandSegmentParams {
+  float min_share_on_island = 0.5f;
+  float min_share_of_island = 0.3f;
+};
+
+inline void describeParameters(ParameterList<IslandSegmentParams>& list) {
+  list.add("min_share_on_island", &IslandSegmentParams::min_share_on_island, 0.0, 1.0, "",
+           "a segment lends its plane to an island it lies on by this share...")
+      .add("min_share_of_island", &IslandSegmentParams::min_share_of_island, 0.0, 1.0, "",
+           "...and covers this share of (a piece of the object, not a detail of many)");
+}
+
+/// Stage mirror_twins: two like objects the plane between them mirrors onto each other.
+struct MirrorTwinParams {
+  float min_part_fraction = 0.25f;
+  float min_free_fraction = 0.6f;
+  int min_pairs = 10;
+};
+
+inline void describeParameters(ParameterList<MirrorTwinParams>& list) {
+  list.add("min_part_fraction", &MirrorTwinParams::min_part_fraction, 0.0, 1.0, "",
+           "pieces with at least this share of the segment are objects")
+      .add("min_free_fraction", &MirrorTwinParams::min_free_fraction, 0.0, 1.0, "",
+           "share of mirrored pairs across pieces whose midpoint the sensor saw through")
+      .add("min_pairs", &MirrorTwinParams::min_pairs, 1, 100000, "pairs", "fewer mirrored pairs across the pieces decide nothing");
+}
+
+/// Stage composites: a segment that is two objects meeting at a concave seam.
+struct CompositeSegmentParams {
+  float crease_angle_deg = 30.0f;
+  float min_nested_fraction = 0.8f;
+  float min_part_fraction = 0.2f;
+  float max_part_fraction = 0.8f;
+  float max_part_overlap = 0.1f;
+  float min_coverage = 0.85f;
+  float min_crease_fraction = 0.5f;
+  float min_rest_crease_fraction = 0.9f;
+  int min_seam_links = 5;
+  float max_swapped_fraction = 0.3f;
+};
+
+inline void describeParameters(ParameterList<CompositeSegmentParams>& list) {
+  using P = CompositeSegmentParams;
+  list.add("crease_angle_deg", &P::crease_angle_deg, 0.1, 180.0, "deg",
+           "concave links whose normals differ more are creases where two objects may meet")
+      .add("min_nested_fraction", &P::min_nested_fraction, 0.0, 1.0, "", "share of each part inside the composite")
+      .add("min_part_fraction", &P::min_part_fraction, 0.0, 1.0, "", "each part has at least this share of the composite...")
+      .add("max_part_fraction", &P::max_part_fraction, 0.0, 1.0, "", "...and at most this share")
+      .add("max_part_overlap", &P::max_part_overlap, 0.0, 1.0, "", "the parts share at most this share of the smaller")
+      .add("min_coverage", &P::min_coverage, 0.0, 1.0, "", "the two parts cover at least this share of the composite")
+      .add("min_crease_fraction", &P::min_crease_fraction, 0.0, 1.0, "", "share of the links between the parts on a crease")
+      .add("min_rest_crease_fraction", &P::min_rest_crease_fraction, 0.0, 1.0, "",
+           "the same for a part not found alone (a flush face running on makes it fall short)")
+      .add("min_seam_links", &P::min_seam_links, 1, 100000, "links", "parts linked by fewer links are apart")
+      .add("max_swapped_fraction", &P::max_swapped_fraction, 0.0, 1.0, "",
+           "parts whose matched reflections land on each other more are mirror halves of one object");
+}
+
+/// Stage nested: an object the cut glued onto another object's segment.
+struct NestedSegmentParams {
+  float min_nested_fraction = 0.8f;
+  float max_size_ratio = 0.8f;
+  float max_explained_fraction = 0.5f;
+};
+
+inline void describeParameters(ParameterList<NestedSegmentParams>& list) {
+  using P = NestedSegmentParams;
+  list.add("min_nested_fraction", &P::min_nested_fraction, 0.0, 1.0, "", "share of the smaller segment inside the larger")
+      .add("max_size_ratio", &P::max_size_ratio, 0.0, 1.0, "", "the smaller segment has at most this share of the larger's size")
+      .add("max_explained_fraction", &P::max_explained_fraction, 0.0, 1.0, "",
+           "below this share of points the larger plane explains, the nested segment is another object");
+}
+
+/// Stage color_seams: flush objects of different colours.
+struct ColorSeamParams {
+  float max_color_difference = 15.0f;
+  float min_part_fraction = 0.1f;
+  float min_coverage = 0.8f;
+  float min_flat_seam_fraction = 0.5f;
+  int min_seam_links = 5;
+  float min_concave_seam_fraction = 0.3f;
+  float min_touching_part_fraction = 0.25f;
+  float min_seam_span = 0.7f;
+  float min_plane_share = 0.3f;
+  // From symmetry.filter (min_segment_points, smooth_normal_angle_deg): not parameters of their own.
+  int min_part_points = 40;
+  float flat_link_angle_deg = 15.0f;
+};
+
+inline void describeParameters(ParameterList<ColorSeamParams>& list) {
+  using P = ColorSeamParams;
+  list.add("max_color_difference", &P::max_color_difference, 0.1, 200.0, "CIELAB",
+           "linked points closer in colour (lightness at half weight) are one colour region")
+      .add("min_part_fraction", &P::min_part_fraction, 0.0, 1.0, "", "regions with this share of the segment are candidate objects")
+      .add("min_coverage", &P::min_coverage, 0.0, 1.0, "", "those regions cover this share, else the object is printed")
+      .add("min_flat_seam_fraction", &P::min_flat_seam_fraction, 0.0, 1.0, "",
+           "share of the flat and convex links between two regions that is flat for a flush seam")
+      .add("min_seam_links", &P::min_seam_links, 1, 100000, "links", "regions linked by fewer links do not meet")
+      .add("min_concave_seam_fraction", &P::min_concave_seam_fraction, 0.0, 1.0, "",
+           "regions meeting with this share of concave links (a bowl on a box)...")
+      .add("min_touching_part_fraction", &P::min_touching_part_fraction, 0.0, 1.0, "",
+           "...are two objects when the smaller has this share (a handle has less)")
+      .add("min_seam_span", &P::min_seam_span, 0.0, 1.0, "",
+           "a flush seam spans this share of each part along one of its axes (a bottle cap's ring does not)")
+      .add("min_plane_share", &P::min_plane_share, 0.0, 1.0, "", "a found segment's plane is tried on a part it covers this share of");
+}
+
+/// Stage dedup: one segment per object.
+struct DuplicateParams {
+  float max_overlap = 0.7f;
+};
+
+inline void describeParameters(ParameterList<DuplicateParams>& list) {
+  list.add("max_overlap", &DuplicateParams::max_overlap, 0.0, 1.0, "",
+           "segments overlapping more (of the smaller) are one object: the cleanest boundary stays");
+}
+
+/// Stage stray_color_pieces: strips of the next object's colour moved to it.
+struct StrayColorParams {
+  float max_color_difference = 15.0f;
+  float min_dominant_share = 0.7f;
+  float max_stray_share = 0.3f;
+};
+
+inline void describeParameters(ParameterList<StrayColorParams>& list) {
+  list.add("max_color_difference", &StrayColorParams::max_color_difference, 0.1, 200.0, "CIELAB",
+           "colours closer than this are alike (lightness at half weight)")
+      .add("min_dominant_share", &StrayColorParams::min_dominant_share, 0.0, 1.0, "",
+           "a segment is mostly one colour when its largest region has this share")
+      .add("max_stray_share", &StrayColorParams::max_stray_share, 0.0, 1.0, "", "a stray piece has at most this share of its segment");
 }
 
 struct SymmetryParams {
-  SymmetryDetectionParams detection;
-  SymmetryCutParams cut;
-  SymmetryRefinementParams refinement;
-  SymmetryFilterParams filter;
   int threads = 0;
+  std::vector<std::string> stages = {"curves",  "curve_pairs", "upright",         "cut",          "refine",
+                                     "islands", "footprints",  "cut",             "refine",       "filter",
+                                     "island_segments",        "mirror_twins",    "composites",   "nested",
+                                     "color_seams",            "dedup",           "stray_color_pieces", "object_bottoms"};
+  NormalEdgeCurveParams curves;
+  CurvePairParams curve_pairs;
+  UprightHypothesisParams upright;
+  SymmetryCutParams cut;
+  SymmetryRefinementParams refine;
+  IslandParams islands;
+  FootprintParams footprints;
+  SymmetryFilterParams filter;
+  IslandSegmentParams island_segments;
+  MirrorTwinParams mirror_twins;
+  CompositeSegmentParams composites;
+  NestedSegmentParams nested;
+  ColorSeamParams color_seams;
+  DuplicateParams dedup;
+  StrayColorParams stray_color_pieces;
 };
 
+/// Problems of a stage list: unknown names, a stage whose inputs no earlier stage makes, no
+/// segments at the end (stage_catalog.cpp). Empty when the list can run.
+std::vector<std::string> stageListProblems(const std::vector<std::string>& stages);
+
 inline void describeParameters(ParameterList<SymmetryParams>& list) {
-  list.add("threads", &SymmetryParams::threads, 0, 1024, "", "worker threads for independent hypotheses; 0 = all cores");
+  list.add("threads", &SymmetryParams::threads, 0, 1024, "", "worker threads for independent hypotheses; 0 = all cores")
+      .add("stages", &SymmetryParams::stages,
+           "what runs, in order (README, 'The symmetry method'); leave a stage out to switch it off")
+      .rule([](const SymmetryParams& p) {
+        std::string problems;
+        for (const std::string& problem : stageListProblems(p.stages)) problems += (problems.empty() ? "" : "; ") + problem;
+        return problems;
+      });
 }
 
 }  // namespace symmetry_segmentation

@@ -1,21 +1,26 @@
 #pragma once
-// The symmetry method end to end: preprocessing, normal-edge curves, hypotheses, a graph cut
-// per hypothesis, refinement, a second cut, scores, filtering and de-duplication.
+// The symmetry method: the scene prepared once (working cloud, occupancy, graph), then the stages
+// of symmetry.stages in order (stage.h; README, "The symmetry method"), each timed and counted
+// under its own name.
+
+#include <memory>
+#include <vector>
 
 #include "symmetry_segmentation/segmenter.h"
+#include "symmetry_segmentation/symmetry/stage.h"
 
 namespace symmetry_segmentation {
 
 class SymmetrySegmenter : public Segmenter {
  public:
-  SymmetrySegmenter(const PreprocessParams& preprocessing, const SymmetryParams& params)
-      : preprocessing_(preprocessing), params_(params) {}
+  /// Throws InputError when the stage list cannot run.
+  explicit SymmetrySegmenter(const SegmentationConfig& config);
   std::string name() const override { return "symmetry"; }
   SegmentationResult segment(const Scene& scene) const override;
 
  private:
-  PreprocessParams preprocessing_;
-  SymmetryParams params_;
+  SegmentationConfig config_;
+  std::vector<std::unique_ptr<Stage>> stages_;
 };
 
 }  // namespace symmetry_segmentation

@@ -1,55 +1,47 @@
 #pragma once
-// Stage 2b: symmetry planes proposed from single smooth surfaces under the gravity prior of a
-// tabletop: objects stand on the table, so most of their symmetry planes are vertical. The curve
-// matching of stage 2 needs a pair of normal edges; a bottle or a can offers almost none (its
-// rim and a gentle shoulder), so it is proposed from its surfaces instead:
-//  - a curved surface whose normals meet a common vertical axis (surface of revolution): a
-//    vertical plane through that axis, the orientation (of 24) that the score callback rates
-//    best over the column around the axis;
+// Stage 3, upright (our addition): vertical symmetry planes proposed from single smooth surfaces,
+// under the gravity prior of a tabletop (objects stand on the table, so most of their symmetry
+// planes are vertical). Curve pairs need two normal edges; a bottle or a can offers almost none,
+// so it is proposed from its surfaces instead:
+//  - a curved surface whose normals meet a common vertical axis (surface of revolution): the
+//    vertical plane through that axis whose orientation the scene's evidence contradicts least
+//    over the column around the axis (the mug's plane goes through its handle);
 //  - a vertical flat face: the vertical plane bisecting it;
 //  - a horizontal flat face: the vertical planes along its two principal axes.
-// These are hypotheses only; the graph cut, refinement and filter judge them as any other.
+// Needs the table; without one it proposes nothing. The cut, refinement and filter judge these
+// as any other hypothesis.
 
-#include <functional>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "symmetry_segmentation/scene.h"
+#include "symmetry_segmentation/symmetry/scene_evidence.h"
+#include "symmetry_segmentation/symmetry/stage.h"
 #include "symmetry_segmentation/symmetry/symmetry_hypotheses.h"
+#include "symmetry_segmentation/symmetry/symmetry_params.h"
 
 namespace symmetry_segmentation {
 
-struct UprightHypothesisParams {
-  int min_surface_points = 20;         ///< Smaller merged surfaces propose nothing.
-  float flat_curvature = 0.02f;        ///< Surfaces with less PCA curvature propose face planes.
-  float flat_normal_spread_deg = 10.0f;///< Surfaces whose normals spread more propose an axis plane.
-  float face_tilt_deg = 20.0f;         ///< Faces within this of vertical / horizontal propose planes.
-  float max_axis_residual = 0.01f;     ///< RMS distance of normal lines from the fitted axis (m).
-  float max_axis_radius = 0.25f;       ///< Farther axes are not an object's (m).
-  float min_normal_spread_deg = 20.0f; ///< Normals must turn around the axis to locate it: the mean of
-                                       ///< the unit normals is shorter than cos(this / 2) (an evenly
-                                       ///< sampled arc needs about 35 degrees for the default).
-};
-
-/// How well point `index` is explained by its reflection about `plane`: positive when it lands on
-/// a matching point, negative when it lands in free space, 0 when nothing is known.
-using ReflectionScore = std::function<float(int index, const SymmetryPlane& plane)>;
-
-/// Scores a reflection +1 when it lands within 1 cm of a cloud point, else 0 (no free-space
-/// knowledge). For callers without an occupancy map.
-ReflectionScore landingScore(const Cloud& cloud);
-
-/// Planes proposed from each merged surface (labels from mergedSegmentLabels; 0 = none). `up` is
-/// the unit normal of the supporting plane; `score` picks the orientation of planes through an
-/// axis (the mug's plane goes through its handle: other orientations mirror it into free space).
-/// Each hypothesis' support is its surface's size. Deterministic, ordered by surface label.
-std::vector<SymmetryHypothesis> uprightHypotheses(const Cloud& cloud, const std::vector<int>& labels,
-                                                  const Eigen::Vector3f& up, const UprightHypothesisParams& params,
-                                                  const ReflectionScore& score);
+/// Planes proposed from each merged surface of `evidence.cloud()` (labels from
+/// mergedSegmentLabels; 0 = none). `up` is the unit normal of the supporting plane. Each
+/// hypothesis' support is its surface's size; planes through an axis are anchored on the axis'
+/// surface. Deterministic, ordered by surface label.
+std::vector<SymmetryHypothesis> uprightHypotheses(const SceneEvidence& evidence, const std::vector<int>& labels,
+                                                  const Eigen::Vector3f& up, const UprightHypothesisParams& params);
 
 /// `extra` hypotheses appended to `base` unless near-equal (angle and offset) to one already there.
 void appendDistinctHypotheses(std::vector<SymmetryHypothesis>& base, const std::vector<SymmetryHypothesis>& extra,
                               float max_angle_deg, float max_distance);
+
+/// The stage: upright planes not near-equal to a hypothesis already there, appended.
+class UprightStage : public Stage {
+ public:
+  explicit UprightStage(const UprightHypothesisParams& params) : params_(params) {}
+  void run(PipelineState& state) const override;
+
+ private:
+  UprightHypothesisParams params_;
+};
 
 }  // namespace symmetry_segmentation

@@ -1,0 +1,61 @@
+// The pipeline state: the scene prepared for the stages, and the segments it reports.
+#include "symmetry_segmentation/symmetry/pipeline_state.h"
+
+#include "symmetry_segmentation/occupancy.h"
+#include "symmetry_segmentation/segment_order.h"
+#include "symmetry_segmentation/stopwatch.h"
+#include "symmetry_segmentation/symmetry/graph_evidence.h"
+#include "symmetry_segmentation/symmetry/sorted_indices.h"
+#include "symmetry_segmentation/symmetry/symmetric_graph_cut.h"
+
+namespace symmetry_segmentation {
+
+PipelineState::PipelineState() = default;
+PipelineState::~PipelineState() = default;
+PipelineState::PipelineState(PipelineState&&) noexcept = default;
+PipelineState& PipelineState::operator=(PipelineState&&) noexcept = default;
+
+void PipelineState::count(const std::string& what, std::size_t value) {
+  counts.emplace_back(stage_label + "." + what, value);
+}
+
+PipelineState preparePipeline(const Scene& scene, const PreprocessParams& preprocessing, const SymmetryParams& params) {
+  Stopwatch stage;
+  PipelineState state;
+  state.scene = &scene;
+  state.threads = params.threads;
+  state.has_color = scene.has_color;
+  state.prepared = preprocess(scene, preprocessing);
+  state.cloud = state.prepared.cloud;
+  if (state.prepared.has_table) state.up = state.prepared.table_plane.head<3>().normalized();
+  state.timing_ms.emplace_back("preprocess", stage.lap());
+
+  RayCastOptions ray_cast;
+  ray_cast.resolution = preprocessing.voxel_size;
+  state.occupancy = std::make_unique<OccupancyMap>(occupancyForScene(scene, ray_cast));
+  state.timing_ms.emplace_back("occupancy", stage.lap());
+
+  std::optional<PlaneCoefficients> table;
+  if (state.prepared.has_table) table = state.prepared.table_plane;
+  state.graph = std::make_unique<SymmetricGraphCut>(state.cloud, *state.occupancy, table, params.cut);
+  state.evidence = std::make_unique<GraphEvidence>(*state.graph, *state.occupancy, params.filter);
+  state.timing_ms.emplace_back("graph", stage.lap());
+  state.counts.emplace_back("working_points", state.cloud->size());
+  return state;
+}
+
+std::vector<Segment> reportedSegments(const PipelineState& state) {
+  std::vector<Segment> segments;
+  segments.reserve(state.segments.size());
+  for (const CandidateSegment& candidate : state.segments) {
+    Segment segment;
+    segment.indices = setUnion(expandToInput(state.prepared, candidate.points), candidate.extra_input_points);
+    segment.symmetry = candidate.plane;
+    segment.scores = candidate.scores;
+    segments.push_back(std::move(segment));
+  }
+  sortSegmentsBySize(segments);
+  return segments;
+}
+
+}  // namespace symmetry_segmentation
