@@ -5,7 +5,7 @@ simulated time from a looping `rosbag play --clock`, tf map -> camera published 
 be dropped), 4 threads calling ~segment with the scene's cloud, and a schedule of abuse:
 
   warm-up   every abuse below once, so one-off allocations are in the baseline; then VmRSS
-            "start" = median of 5 samples, 1 s apart, while the node is busy
+            "start" = median of 21 samples (--memory-samples), 1 s apart, while the node is busy
   during    tf stops for 10 s; empty and all-NaN clouds (topic and service); a 5M-point cloud
             (topic and service: rejected by ~max_input_points); for 10 s the OctoMap in frame
             "odom" (moved into "map" through tf; the map comes from here, not from the bag);
@@ -56,6 +56,8 @@ def parse_args():
     parser.add_argument("--threads", type=int, default=4, help="threads calling ~segment (default 4)")
     parser.add_argument("--call-pause", type=float, default=0.5, help="pause between one thread's calls (s)")
     parser.add_argument("--call-timeout", type=float, default=120.0, help="a call taking longer has hung (s)")
+    parser.add_argument("--memory-samples", type=int, default=21,
+                        help="VmRSS samples, 1 s apart, whose median is the start / end figure (default 21)")
     parser.add_argument("--max-growth", type=float, default=0.05, help="allowed VmRSS growth (default 0.05)")
     parser.add_argument("--time-limit", type=float, default=3600.0, help="give up after this many s")
     parser.add_argument("--big-points", type=int, default=5000000, help="points of the big cloud")
@@ -454,8 +456,10 @@ class Soak:
         return self.node_own_pid
 
     def memory(self, label):
+        # The median of many samples: resident memory follows the segmentations in flight (up and
+        # down by ~10 MB within a second here), and 5 samples could not tell that from growth.
         samples = []
-        for _ in range(5):
+        for _ in range(self.args.memory_samples):
             samples.append(vm_rss_kb(self.node_pid()))
             self.wait_wall(1.0)
         value = statistics.median(samples)
