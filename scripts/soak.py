@@ -5,7 +5,7 @@ simulated time from a looping `rosbag play --clock`, tf map -> camera published 
 be dropped), 4 threads calling ~segment with the scene's cloud, and a schedule of abuse:
 
   warm-up   every abuse below once, so one-off allocations are in the baseline; then VmRSS
-            "start" = median of 5 samples, 1 s apart, while the node is busy
+            "start" = median of 21 samples (--memory-samples), 1 s apart, while the node is busy
   during    tf stops for 10 s; empty and all-NaN clouds (topic and service); a 5M-point cloud
             (topic and service: rejected by ~max_input_points); for 10 s the OctoMap in frame
             "odom" (moved into "map" through tf; the map comes from here, not from the bag);
@@ -17,10 +17,21 @@ be dropped), 4 threads calling ~segment with the scene's cloud, and a schedule o
 
 Fails when the node dies, a service call does not return within --call-timeout, a call gets a
 status other than the expected one, or VmRSS grew by --max-growth or more.
+
+Each VmRSS figure comes with where the resident memory is (from /proc/PID/smaps): the main
+malloc heap, glibc's per-thread arenas (how many, and their resident total), other anonymous
+mappings (large mmap'd blocks, thread stacks) and file-backed pages. Growth in the arenas while
+the heap in use stays flat (heaptrack) is allocator retention, not a leak.
+
+SYMSEG_SOAK_NODE_PREFIX, when set, is put in front of the node's command (split like a shell
+would), e.g. SYMSEG_SOAK_NODE_PREFIX="heaptrack -o /tmp/node" or "valgrind --tool=massif": the
+memory figures are then those of the node process itself, found below the wrapper.
 """
 import argparse
 import os
 import random
+import re
+import shlex
 import shutil
 import signal
 import socket
@@ -45,6 +56,8 @@ def parse_args():
     parser.add_argument("--threads", type=int, default=4, help="threads calling ~segment (default 4)")
     parser.add_argument("--call-pause", type=float, default=0.5, help="pause between one thread's calls (s)")
     parser.add_argument("--call-timeout", type=float, default=120.0, help="a call taking longer has hung (s)")
+    parser.add_argument("--memory-samples", type=int, default=21,
+                        help="VmRSS samples, 1 s apart, whose median is the start / end figure (default 21)")
     parser.add_argument("--max-growth", type=float, default=0.05, help="allowed VmRSS growth (default 0.05)")
     parser.add_argument("--time-limit", type=float, default=3600.0, help="give up after this many s")
     parser.add_argument("--big-points", type=int, default=5000000, help="points of the big cloud")
@@ -64,6 +77,72 @@ def vm_rss_kb(pid):
             if line.startswith("VmRSS:"):
                 return int(line.split()[1])
     raise RuntimeError("no VmRSS for pid %d" % pid)
+
+
+ARENA_HEAP_SIZE = 64 << 20  # glibc's HEAP_MAX_SIZE on 64-bit: each non-main arena heap reserves this much
+
+
+def memory_breakdown_kb(pid):
+    """Resident kB by kind of mapping, from /proc/PID/smaps: the main malloc heap, the heaps of
+    glibc's other arenas (64 MB-aligned anonymous reservations, rw part plus ---p rest), other
+    anonymous mappings, file-backed mappings."""
+    mappings = []  # [start, end, perms, path, rss_kb]
+    header = re.compile(r"^([0-9a-f]+)-([0-9a-f]+) (\S+) \S+ \S+ \S+\s*(.*)$")
+    with open("/proc/%d/smaps" % pid) as smaps:
+        for line in smaps:
+            match = header.match(line)
+            if match:
+                mappings.append([int(match.group(1), 16), int(match.group(2), 16), match.group(3),
+                                 match.group(4).strip(), 0])
+            elif line.startswith("Rss:"):
+                mappings[-1][4] = int(line.split()[1])
+    kinds = {"heap": 0, "arenas": 0, "anonymous": 0, "files": 0}
+    arena_count = 0
+    for index, (start, end, perms, path, rss) in enumerate(mappings):
+        if path == "[heap]":
+            kinds["heap"] += rss
+        elif path and not path.startswith("["):
+            kinds["files"] += rss
+        elif path:
+            kinds["anonymous"] += rss  # [stack], [vvar], ...
+        else:
+            reserved_end = end
+            if index + 1 < len(mappings) and mappings[index + 1][0] == end and mappings[index + 1][2] == "---p":
+                reserved_end = mappings[index + 1][1]
+            if start % ARENA_HEAP_SIZE == 0 and reserved_end - start == ARENA_HEAP_SIZE and perms == "rw-p":
+                kinds["arenas"] += rss
+                arena_count += 1
+            else:
+                kinds["anonymous"] += rss
+    kinds["arena_count"] = arena_count
+    return kinds
+
+
+def describe_breakdown(kinds):
+    return "main heap %.1f MB, %d arena heaps %.1f MB, other anonymous %.1f MB, files %.1f MB" % (
+        kinds["heap"] / 1024.0, kinds["arena_count"], kinds["arenas"] / 1024.0, kinds["anonymous"] / 1024.0,
+        kinds["files"] / 1024.0)
+
+
+def node_process(pid):
+    """The node's own pid: `pid` itself, or with a wrapper in front (heaptrack runs it as a child),
+    the descendant running segmentation_node."""
+    pending = [pid]
+    while pending:
+        current = pending.pop(0)
+        try:
+            with open("/proc/%d/cmdline" % current, "rb") as cmdline:
+                program = cmdline.read().split(b"\0")[0]
+        except OSError:
+            continue
+        if os.path.basename(program) == b"segmentation_node":
+            return current
+        try:
+            with open("/proc/%d/task/%d/children" % (current, current)) as children:
+                pending.extend(int(child) for child in children.read().split())
+        except OSError:
+            pass
+    return pid
 
 
 class Failure(Exception):
@@ -95,13 +174,13 @@ class Soak:
                                                 start_new_session=True, **kwargs)
         return self.processes[name]
 
-    def kill(self, name):
+    def kill(self, name, timeout=15.0):
         process = self.processes.pop(name, None)
         if process is None or process.poll() is not None:
             return
         os.killpg(process.pid, signal.SIGINT)
         try:
-            process.wait(timeout=15)
+            process.wait(timeout=timeout)
         except subprocess.TimeoutExpired:
             os.killpg(process.pid, signal.SIGKILL)
             process.wait()
@@ -368,16 +447,24 @@ class Soak:
             if time.monotonic() - getattr(self, "last_progress", 0.0) > 60.0:
                 self.last_progress = time.monotonic()
                 self.log("progress: %d clouds processed, %d service calls, VmRSS %.1f MB" % (
-                    processed, calls, vm_rss_kb(self.processes["node"].pid) / 1024.0))
+                    processed, calls, vm_rss_kb(self.node_pid()) / 1024.0))
             self.wait_wall(1.0)
 
+    def node_pid(self):
+        if not hasattr(self, "node_own_pid") or not os.path.exists("/proc/%d" % self.node_own_pid):
+            self.node_own_pid = node_process(self.processes["node"].pid)
+        return self.node_own_pid
+
     def memory(self, label):
+        # The median of many samples: resident memory follows the segmentations in flight (up and
+        # down by ~10 MB within a second here), and 5 samples could not tell that from growth.
         samples = []
-        for _ in range(5):
-            samples.append(vm_rss_kb(self.processes["node"].pid))
+        for _ in range(self.args.memory_samples):
+            samples.append(vm_rss_kb(self.node_pid()))
             self.wait_wall(1.0)
         value = statistics.median(samples)
         self.log("VmRSS %s: %.1f MB (samples %s kB)" % (label, value / 1024.0, " ".join(map(str, samples))))
+        self.log("  where: %s" % describe_breakdown(memory_breakdown_kb(self.node_pid())))
         return value
 
     # --- the run -------------------------------------------------------------------------
@@ -397,14 +484,15 @@ class Soak:
                        check=True)
         for name, value in (("mode", "continuous"), ("fixed_frame", "map"), ("sensor_frame", "camera")):
             subprocess.run(["rosparam", "set", "/segmentation/" + name, value], check=True)
-        self.start("node", [os.path.join(self.tools, "segmentation_node"), "__name:=segmentation"])
+        prefix = shlex.split(os.environ.get("SYMSEG_SOAK_NODE_PREFIX", ""))
+        self.start("node", prefix + [os.path.join(self.tools, "segmentation_node"), "__name:=segmentation"])
         self.ros_setup()
         self.map_pub = self.octomap_publisher()  # latched, like octomap_server
         self.map_pub.publish(self.recorded_map("map"))
         threading.Thread(target=self.tf_loop, daemon=True).start()
         self.start_player()
-        self.log("node pid %d, master port %d, bag played at %gx in a loop" % (self.processes["node"].pid, port,
-                                                                               self.args.rate))
+        self.log("node pid %d, master port %d, bag played at %gx in a loop%s" % (
+            self.processes["node"].pid, port, self.args.rate, " (prefix: %s)" % " ".join(prefix) if prefix else ""))
         deadline = time.monotonic() + 120
         while self.processed < 5:
             if time.monotonic() > deadline:
@@ -460,8 +548,10 @@ class Soak:
 
     def shutdown(self):
         self.stop.set()
+        # A profiler in front of the node (SYMSEG_SOAK_NODE_PREFIX) writes its data after the node exits.
+        profiled = bool(os.environ.get("SYMSEG_SOAK_NODE_PREFIX"))
         for name in ("player", "node", "master"):
-            self.kill(name)
+            self.kill(name, timeout=600.0 if profiled and name == "node" else 15.0)
 
 
 def main():

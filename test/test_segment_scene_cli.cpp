@@ -106,6 +106,32 @@ TEST(SegmentSceneCli, BadConfigurationIsReported) {
   EXPECT_NE(result.output.find("cluster_tolerance"), std::string::npos) << result.output;
 }
 
+TEST(SegmentSceneCli, SetValuesAreCheckedTogetherAndStageListsAreChecked) {
+  const std::string dir = test_support::makeTempDir("cli_set_order");
+  ss::saveScene(boxScene(), dir + "/scene");
+  // Lowering both alpha bounds works in either order (checked once, after all values are in).
+  for (const char* order : {"--set symmetry.cut.alpha_max_deg=10 --set symmetry.cut.alpha_min_deg=5",
+                            "--set symmetry.cut.alpha_min_deg=5 --set symmetry.cut.alpha_max_deg=10"}) {
+    const auto result = segment(dir + "/scene", dir + "/out", order);
+    EXPECT_EQ(result.exit_code, 0) << order << "\n" << result.output;
+  }
+  // The paper's stages alone run; a list that cannot run is refused with its reason.
+  auto result = segment(dir + "/scene", dir + "/out", "--set 'symmetry.stages=[curves, curve_pairs, cut, refine, filter, dedup]'");
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_EQ(result.output.find("upright"), std::string::npos) << "upright did not run: " << result.output;
+  result = segment(dir + "/scene", dir + "/out", "--set 'symmetry.stages=[cut, filter]'");
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_NE(result.output.find("'cut' (position 1) needs hypotheses"), std::string::npos) << result.output;
+
+  const auto stages = runCommand(toolPath("segment_scene") + " --list-stages");
+  EXPECT_EQ(stages.exit_code, 0);
+  EXPECT_NE(stages.output.find("footprints (hypothesis source; needs candidates, islands; makes hypotheses)"),
+            std::string::npos) << stages.output;
+  const auto config = runCommand(toolPath("segment_scene") + " --print-config");
+  EXPECT_EQ(config.exit_code, 0);
+  EXPECT_EQ(config.output, test_support::readTextFile(test_support::sourceDir() + "/config/default.yaml"));
+}
+
 TEST(SegmentSceneCli, EveryBadInputGivesOneClearLine) {
   const std::string dir = test_support::makeTempDir("cli_bad_inputs");
   ss::saveScene(boxScene(), dir + "/good");

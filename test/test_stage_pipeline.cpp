@@ -82,6 +82,23 @@ TEST(StageList, EachStageHeaderNamesItsPlaceInTheDefaultList) {
   EXPECT_EQ(labelled.size(), ss::stageCatalog().size());
 }
 
+TEST(StageList, TheReadmeListsTheDefaultListInOrder) {
+  // "N. `name` ..." items of the README's method section, one per entry of the default list.
+  const std::string readme = test_support::readTextFile(test_support::sourceDir() + "/README.md");
+  const std::size_t begin = readme.find("## The symmetry method");
+  ASSERT_NE(begin, std::string::npos);
+  std::istringstream section(readme.substr(begin, readme.find("\n## ", begin + 1) - begin));
+  std::vector<std::string> listed;
+  const std::regex item("^(\\d+)\\. `(\\w+)`");
+  for (std::string line; std::getline(section, line);) {
+    std::smatch match;
+    if (!std::regex_search(line, match, item)) continue;
+    EXPECT_EQ(std::stoul(match[1]), listed.size() + 1) << line;
+    listed.push_back(match[2]);
+  }
+  EXPECT_EQ(listed, ss::SymmetryParams().stages);
+}
+
 TEST(StageList, AListThatCannotRunIsRejectedWithItsReason) {
   EXPECT_NE(problemsOf({"curves", "curve_pairs", "cut", "filter", "no_such_stage"}).find("unknown stage 'no_such_stage'"),
             std::string::npos);

@@ -10,6 +10,7 @@
 
 #include "symmetry_segmentation/command_line.h"
 #include "symmetry_segmentation/parameter_schema.h"
+#include "symmetry_segmentation/symmetry/stage.h"
 #include "symmetry_segmentation/scene_io.h"
 #include "symmetry_segmentation/segmentation_output.h"
 #include "symmetry_segmentation/segmenter.h"
@@ -23,7 +24,7 @@ namespace {
 const char* const kUsage =
     "usage: segment_scene <scene> --output DIR [--method M] [--config file.yaml]\n"
     "                     [--set section.key=value]... [--no-png]\n"
-    "       segment_scene --print-config | --print-live-parameters\n"
+    "       segment_scene --print-config | --print-live-parameters | --list-stages\n"
     "  <scene>    a scene directory (cloud.ply|cloud.pcd, occupancy.bt, table_plane.txt, labels.txt)\n"
     "             or a single .ply/.pcd cloud file\n"
     "  --method   segmentation method (default: " ;
@@ -44,7 +45,24 @@ void printUsage() {
                "  --print-config           print every parameter at its default, documented\n"
                "                           (the text of config/default.yaml), and exit\n"
                "  --print-live-parameters  print the parameters the node takes while it runs\n"
-               "                           (the text of cfg/live_parameters.yaml), and exit\n";
+               "                           (the text of cfg/live_parameters.yaml), and exit\n"
+               "  --list-stages            print every stage of the symmetry method (kind, what it needs and\n"
+               "                           makes, what it does) and the default list, and exit\n";
+}
+
+void printStages() {
+  auto names = [](const std::vector<ss::Product>& products) {
+    std::string text;
+    for (ss::Product product : products) text += (text.empty() ? "" : ", ") + std::string(ss::productName(product));
+    return text.empty() ? std::string("-") : text;
+  };
+  for (const ss::StageInfo& stage : ss::stageCatalog()) {
+    std::cout << stage.name << " (" << ss::stageKindName(stage.kind) << "; needs " << names(stage.needs) << "; makes "
+              << names(stage.makes) << ")\n    " << stage.summary << "\n";
+  }
+  std::cout << "default symmetry.stages:";
+  for (const std::string& name : ss::SymmetryParams().stages) std::cout << ' ' << name;
+  std::cout << "\n";
 }
 
 Options parse(int argc, char** argv) {
@@ -68,6 +86,9 @@ Options parse(int argc, char** argv) {
       std::exit(0);
     } else if (arg == "--print-live-parameters") {
       std::cout << ss::liveParametersYaml();
+      std::exit(0);
+    } else if (arg == "--list-stages") {
+      printStages();
       std::exit(0);
     } else if (arg == "--no-png") {
       options.png = false;

@@ -1,13 +1,9 @@
 #pragma once
-// Stage 15, color_seams (our addition): objects that meet flush, told apart by their colour.
-// A box on a box of the same footprint, or boxes of one depth pushed into a row, are to the
-// geometry one taller or wider box: no cut or crease test can part them, their colours can. A
-// segment whose surface falls into a few large uniform-colour regions is split into them where
-// the regions meet over flat faces along a seam running right across both, or at a concave
-// crease between two sizeable regions (a bowl on a box); colour edges along an object's convex
-// edges (a lid), around a narrow part (a bottle's cap) or in print keep it whole. Each part keeps
-// the plane, of the segment's and those found on the part, that it contradicts least. Clouds
-// without colour are left alone.
+// Stage 15, color_seams (our addition): a box on a box of the same footprint, or a row of boxes
+// of one depth, is to the geometry one bigger box; their colours can part them. A segment of a
+// few large uniform-colour regions meeting over flat faces along a seam right across both (or at
+// a concave crease between sizeable regions) is split into them; colour edges on convex edges (a
+// lid), around a narrow part (a bottle's cap) or in print keep it whole. Needs colour.
 #include <vector>
 
 #include "symmetry_segmentation/symmetry/scene_evidence.h"

@@ -1,20 +1,9 @@
 #pragma once
-// Stage 13, composites (our addition): a segment that is two objects meeting at a concave seam.
-//
-// One plane can be a symmetry of two objects at once: a bowl centred on a box, a can pushed
-// against the middle of a box's end face. Its cut takes both, scores as well as either object
-// alone, and, being larger, would win deduplication. When each object is also found on its own
-// (two nearly disjoint segments that together make up the larger one), the two are apart or meet
-// along a concave crease - where separate objects touch - rather than along a smooth or convex
-// edge (a box's two halves, a bowl's rim), and the larger segment's plane mirrors each part onto
-// itself - two objects that happen to share a plane - rather than one part onto the other (the
-// two arms of a U-shaped object, the halves of a box seen around an occluder), the larger
-// segment is replaced by the two. Two parts found alone must moreover be joined by creases
-// only: if any path between them within the larger segment crosses no crease, they are parts of
-// one object (an L-shaped block's slab and upright meet at a crease on the inside but run on
-// into each other along the outer faces, through the corner neither took).
-// Objects that meet flush on one flat face (a box on a box of the same footprint) show no crease:
-// nothing in the geometry tells them from one taller box, only their colours (color_seams.h).
+// Stage 13, composites (our addition): one plane can be a symmetry of two objects at once (a bowl
+// centred on a box), and its cut takes both and, being larger, wins deduplication. A segment that
+// two segments found alone make up (or one and the rest), apart or meeting only at concave creases
+// and each mirrored onto itself by its plane, is replaced by the two; parts that also run on into
+// each other without a crease (an L-shaped block's slab and upright) stay one object.
 #include <vector>
 
 #include "symmetry_segmentation/symmetry/scene_evidence.h"

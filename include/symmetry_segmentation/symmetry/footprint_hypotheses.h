@@ -1,15 +1,9 @@
 #pragma once
-// Stage 7, footprints (our addition): planes for an object no other hypothesis reached; the cut
-// and refine stages after it form a second round for these planes alone.
-//
-// Curve pairs and single surfaces propose the planes of most objects; an object seen from one
-// side only, with few normal edges and no surface of revolution, can get none that its cut
-// takes, and is then missed outright; an L-shaped block whose face planes came out a few degrees
-// off is found in pieces. When it stands apart (an island of points, see island_segments.h) and
-// no candidate passing the filter covers it, the gravity prior still gives two good guesses: the
-// vertical planes through the middle of its footprint along the footprint's principal axes (a
-// box, an L or U shape, a mug seen from its handle's side). The cut, refinement and filter judge
-// them as any other hypothesis.
+// Stage 7, footprints (our addition): an island (islands.h) that no candidate passing the filter
+// covers - an object seen from one side, with few edges and no surface of revolution, or one found
+// in pieces because its planes came out a few degrees off - gets the two vertical planes through
+// the middle of its footprint along the footprint's principal axes. The cut and refine listed
+// after it are a second round for these planes alone.
 #include <vector>
 
 #include <Eigen/Core>

@@ -1,11 +1,8 @@
 #pragma once
-// Stage 11, island_segments (our addition): objects standing apart, checked by their symmetry.
-// The graph cut finds an object as the points its plane explains; where that plane is a few
-// degrees off, or is one arm's plane rather than the whole object's, the cut returns pieces (an
-// L-shaped block's arm, a mug without its handle). An island (islands.h) that one of the found
-// planes explains as a whole (it passes the same filter as every segment) is added as a segment
-// too, and deduplication then prefers it to its pieces. An island of two objects that no plane
-// explains together is not added.
+// Stage 11, island_segments (our addition): an island (islands.h) that one of the found planes
+// explains whole (it passes the filter) is added as a segment, so an object whose cut came out in
+// pieces - its plane a few degrees off, or one arm's plane (an L-shaped block, a mug and its
+// handle) - can still be reported whole; deduplication then prefers it to its pieces.
 #include <vector>
 
 #include "symmetry_segmentation/symmetry/scene_evidence.h"

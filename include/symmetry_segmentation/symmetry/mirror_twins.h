@@ -1,13 +1,9 @@
 #pragma once
-// Stage 12, mirror_twins (our addition): two objects that are each other's mirror image.
-//
-// Two like objects side by side (two bowls, two bottles) are mirror images about the plane
-// between them, and the cut for that plane takes both: the symmetric-neighbour links join them
-// although no surface does. One object can also come out as two pieces joined only by those
-// links - a box seen left and right of a board in front of it - and must stay whole. The space
-// between the pieces tells them apart: between two objects the sensor saw through (observed free
-// space halfway between a point and its mirror image), between the pieces of one object it saw
-// the object's surface or nothing (its inside, or what the board hid).
+// Stage 12, mirror_twins (our addition): two like objects side by side (two bowls, two bottles)
+// are mirror images about the plane between them, and its cut takes both. A segment in separate
+// pieces that its plane mirrors onto each other is split when the sensor saw through the space
+// between them (observed free space); the pieces of one object seen around an occluder have
+// unobserved space between them and stay together.
 #include <vector>
 
 #include "symmetry_segmentation/symmetry/scene_evidence.h"

@@ -1,10 +1,8 @@
 #pragma once
-// Stage 14, nested (our addition): objects the graph cut glued onto another object's segment.
-// A cut may take a neighbour its plane mirrors into occluded space (a can on a box, the next box
-// of a row): occluded space is no evidence against it and the smooth joint holds it. When that
+// Stage 14, nested (our addition): a cut may take a neighbour its plane mirrors into occluded
+// space (a can on a box, the next box of a row), which is no evidence against it. When that
 // neighbour is also found alone, nested in the larger segment, and the larger segment's plane
-// does not mirror it onto scene points, it is another object and is taken out; a part the plane
-// does explain (a mug's body inside the whole mug) stays.
+// does not mirror it onto scene points, it is taken out; a part the plane explains stays.
 
 #include <vector>
 

@@ -1,10 +1,8 @@
 #pragma once
-// Stage 17, stray_color_pieces (our addition): strips of the next object's colour, moved to that
-// object. Along a crease where two objects touch, a cut may take a strip of the neighbour (the
-// top face of a shorter box in a row, which its plane mirrors into occluded space). After
-// deduplication each object has its own segment; a small region of a segment coloured unlike the
-// rest of it and like an adjacent segment (both mostly one colour) moves there. Print on one
-// object matches no neighbour and stays. Clouds without colour are left alone.
+// Stage 17, stray_color_pieces (our addition): along a crease where two objects touch, a cut may
+// take a strip of the neighbour (the top of a shorter box in a row). After deduplication a small
+// region of a segment coloured unlike the rest of it and like an adjacent segment moves there;
+// print matches no neighbour and stays. Needs colour.
 #include <vector>
 
 #include "symmetry_segmentation/scene.h"

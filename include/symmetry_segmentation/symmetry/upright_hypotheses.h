@@ -1,15 +1,9 @@
 #pragma once
-// Stage 3, upright (our addition): vertical symmetry planes proposed from single smooth surfaces,
-// under the gravity prior of a tabletop (objects stand on the table, so most of their symmetry
-// planes are vertical). Curve pairs need two normal edges; a bottle or a can offers almost none,
-// so it is proposed from its surfaces instead:
-//  - a curved surface whose normals meet a common vertical axis (surface of revolution): the
-//    vertical plane through that axis whose orientation the scene's evidence contradicts least
-//    over the column around the axis (the mug's plane goes through its handle);
-//  - a vertical flat face: the vertical plane bisecting it;
-//  - a horizontal flat face: the vertical planes along its two principal axes.
-// Needs the table; without one it proposes nothing. The cut, refinement and filter judge these
-// as any other hypothesis.
+// Stage 3, upright (our addition): vertical planes proposed by single smooth surfaces, since
+// objects stand on the table and a can or a bottle has almost no normal edges for curve pairs:
+// the plane through a surface of revolution's axis that the scene contradicts least (a mug's
+// goes through its handle), the bisector of a vertical face, the principal axes of a horizontal
+// face. Needs the table; the cut, refine and filter judge these like any other hypothesis.
 
 #include <vector>
 
