@@ -29,6 +29,7 @@ Scene assembleScene(const sensor_msgs::PointCloud2& cloud, const SceneInputs& in
   // The sensor origin is passed on even with a map: the core orients normals and the table
   // plane toward it (without one it votes, which a large table patch can get wrong).
   if (inputs.sensor_origin) scene.sensor_origins.push_back(*inputs.sensor_origin);
+  scene.table_plane = inputs.table_plane;
   if (inputs.occupancy) {
     scene.occupancy = inputs.occupancy;
   } else if (inputs.occupancy_for_region) {

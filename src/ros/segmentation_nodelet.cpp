@@ -1,7 +1,8 @@
 #include "symmetry_segmentation/ros/segmentation_nodelet.h"
 
 #include <chrono>
-#include <iomanip>
+#include <cmath>
+#include <set>
 #include <sstream>
 
 #include <pcl/console/print.h>
@@ -11,10 +12,12 @@
 
 #include "symmetry_segmentation/errors.h"
 #include "symmetry_segmentation/ros/cloud_conversion.h"
+#include "symmetry_segmentation/ros/live_sections.h"
 #include "symmetry_segmentation/ros/marker_conversion.h"
 #include "symmetry_segmentation/ros/octomap_conversion.h"
 #include "symmetry_segmentation/ros/parameters.h"
 #include "symmetry_segmentation/ros/result_conversion.h"
+#include "symmetry_segmentation/ros/table_plane.h"
 #include "symmetry_segmentation/segmenter.h"
 #include "symmetry_segmentation/stopwatch.h"
 
@@ -25,63 +28,103 @@ using Response = SegmentCloud::Response;
 
 constexpr double kTimeJumpTolerance = 0.5;  // s: smaller jumps back are not acted on
 
-// Waits for a transform against the wall clock: with use_sim_time a stopped player stops the
-// clock, and tf2's own timeout (in ROS time) would then never expire.
-bool waitForTransform(const tf2_ros::Buffer& buffer, const std::string& target, const std::string& source,
-                      const ros::Time& stamp, const ros::Duration& timeout, std::string* error) {
-  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(std::max(0.0, timeout.toSec()));
-  while (true) {
-    error->clear();
-    if (buffer.canTransform(target, source, stamp, error)) return true;
-    if (ros::WallTime::now() >= deadline || !ros::ok()) return false;
-    ros::WallDuration(0.01).sleep();
+/// Names in the private namespace the node reads itself; every other name is an algorithm
+/// parameter. lazy, verbose_connection, duration_to_warn_no_connection and (in
+/// segmentation_node, whose process name is the nodelet's) use_multithread_callback are
+/// NodeletLazy's, diagnostic_period diagnostic_updater's.
+const std::set<std::string>& interfaceParameterNames() {
+  static const std::set<std::string> names = {"mode",
+                                              "method",
+                                              "fixed_frame",
+                                              "sensor_frame",
+                                              "table_plane",
+                                              "table_plane_frame",
+                                              "transform_timeout",
+                                              "service_threads",
+                                              "max_input_points",
+                                              "diagnostic_period",
+                                              "lazy",
+                                              "verbose_connection",
+                                              "duration_to_warn_no_connection",
+                                              "use_multithread_callback"};
+  return names;
+}
+
+std::string statusName(uint8_t status) {
+  switch (status) {
+    case Response::SUCCESS: return "SUCCESS";
+    case Response::NO_CLOUD: return "NO_CLOUD";
+    case Response::NO_OCCUPANCY: return "NO_OCCUPANCY";
+    case Response::INVALID_INPUT: return "INVALID_INPUT";
+    case Response::TIMEOUT: return "TIMEOUT";
+    case Response::TRANSFORM_FAILED: return "TRANSFORM_FAILED";
+    case Response::SEGMENTATION_FAILED: return "SEGMENTATION_FAILED";
+    default: return std::to_string(status);
   }
 }
+
+std::string joined(const ConfigValues& values) {
+  std::string text;
+  for (const auto& [key, value] : values) text += (text.empty() ? "" : ", ") + key + " " + value;
+  return text;
 }
+
+/// Reads an optional interface parameter of type T; a value of another type is logged and the
+/// default kept (ros::NodeHandle::param would keep it silently).
+template <class T>
+void readParameter(const ros::NodeHandle& handle, const std::string& name, T& value, const char* type) {
+  if (!handle.hasParam(name)) return;
+  if (!handle.getParam(name, value)) {
+    ROS_ERROR_NAMED("SegmentationNodelet", "~%s is not a %s; using the default", name.c_str(), type);
+  }
+}
+}  // namespace
 
 SegmentationNodelet::~SegmentationNodelet() {
   {
-    std::lock_guard<std::mutex> lock(queue_mutex_);
+    std::lock_guard<std::mutex> lock(inputs_mutex_);  // a waiting ~segment call sees stopping_
     stopping_ = true;
   }
-  queue_changed_.notify_all();
-  {
-    std::lock_guard<std::mutex> lock(inputs_mutex_);  // a waiting ~segment call sees stopping_
-  }
   cloud_arrived_.notify_all();
-  if (worker_.joinable()) worker_.join();
   // Callbacks may still be running on other threads while members are destroyed (in reverse
-  // order of declaration). Stop every source of callbacks first, let ~segment calls in progress
-  // finish (stopping the spinner joins its threads), and take the tf listener's thread down
-  // before the filter it feeds: that thread calls into the filter, whose mutexes must not be
-  // gone (a boost::lock_error otherwise).
+  // order of declaration). Stop every source of callbacks first: the worker (its segmentation
+  // in progress finishes), the ~segment threads (stopping the spinner joins them), the live
+  // parameter servers and the subscribers; the tf listener's thread goes before the buffer.
+  if (worker_) worker_->stop();
+  diagnostics_timer_.stop();
   service_.shutdown();
   if (service_spinner_) service_spinner_->stop();
-  reconfigure_server_.reset();
+  live_sections_.clear();
+  interface_server_.reset();
   {
-    std::lock_guard<std::mutex> lock(subscription_mutex_);
+    boost::mutex::scoped_lock lock(connection_mutex_);
     cloud_subscriber_.shutdown();
   }
   octomap_subscriber_.shutdown();
+  plane_subscriber_.shutdown();
   tf_listener_.reset();
-  tf_filter_.reset();
 }
 
-void SegmentationNodelet::loadParameters() {
-  ros::NodeHandle& pnh = getPrivateNodeHandle();
-  std::string mode;
-  pnh.param<std::string>("mode", mode, "continuous");
+void SegmentationNodelet::loadInterfaceParameters() {
+  const ros::NodeHandle& pnh = getPrivateNodeHandle();
+  std::string mode = "continuous";
+  readParameter(pnh, "mode", mode, "string");
   if (mode != "continuous" && mode != "on_demand") {
     NODELET_ERROR("~mode '%s' is neither 'continuous' nor 'on_demand'; using 'continuous'", mode.c_str());
     mode = "continuous";
   }
   continuous_ = mode == "continuous";
-  pnh.param<std::string>("method", method_, defaultMethod());
-  pnh.param<std::string>("fixed_frame", fixed_frame_, "");
-  pnh.param<std::string>("sensor_frame", sensor_frame_, "");
-  pnh.param("transform_timeout", transform_timeout_, 0.1);
-  pnh.param("max_input_points", max_input_points_, 3000000);
-  pnh.param("service_threads", service_threads_, 2);
+  method_ = defaultMethod();
+  readParameter(pnh, "method", method_, "string");
+  readParameter(pnh, "fixed_frame", fixed_frame_, "string");
+  readParameter(pnh, "sensor_frame", sensor_frame_, "string");
+  readParameter(pnh, "transform_timeout", transform_timeout_, "number");
+  readParameter(pnh, "max_input_points", max_input_points_, "integer");
+  readParameter(pnh, "service_threads", service_threads_, "integer");
+  if (!(transform_timeout_ >= 0.0)) {
+    NODELET_ERROR("~transform_timeout %g is not a duration; using 0.1", transform_timeout_);
+    transform_timeout_ = 0.1;
+  }
   if (service_threads_ < 1) {
     NODELET_ERROR("~service_threads %d is less than 1; using 1", service_threads_);
     service_threads_ = 1;
@@ -91,109 +134,161 @@ void SegmentationNodelet::loadParameters() {
     max_input_points_ = 0;
   }
 
-  SegmentationConfig config;
-  std::vector<std::string> errors;
-  for (const auto& section : configSections()) {
-    XmlRpc::XmlRpcValue value;
-    if (pnh.getParam(section, value)) applyParameters(section, value, config, errors);
+  // ~table_plane: [a, b, c, d] in ~table_plane_frame (default: the processing frame).
+  std::string plane_frame;
+  readParameter(pnh, "table_plane_frame", plane_frame, "string");
+  XmlRpc::XmlRpcValue plane;
+  if (pnh.getParam("table_plane", plane)) {
+    try {
+      if (plane.getType() != XmlRpc::XmlRpcValue::TypeArray) throw InputError("expected a list [a, b, c, d]");
+      std::vector<double> values;
+      for (int i = 0; i < plane.size(); ++i) {
+        if (plane[i].getType() == XmlRpc::XmlRpcValue::TypeInt) {
+          values.push_back(static_cast<int>(plane[i]));
+        } else if (plane[i].getType() == XmlRpc::XmlRpcValue::TypeDouble) {
+          values.push_back(static_cast<double>(plane[i]));
+        } else {
+          throw InputError("expected numbers [a, b, c, d]");
+        }
+      }
+      if (!values.empty()) plane_parameter_ = GivenPlane{planeFromCoefficients(values), plane_frame, ros::Time(), "parameter"};
+    } catch (const InputError& error) {
+      NODELET_ERROR("~table_plane: %s; not used (the table is estimated from each cloud)", error.what());
+    }
   }
-  for (const auto& error : errors) NODELET_ERROR("ignoring parameter %s", error.c_str());
+}
+
+void SegmentationNodelet::loadAlgorithmParameters() {
+  // Everything in the private namespace at once: the interface parameters are skipped, the rest
+  // is one configuration, validated once (a rejected one leaves the defaults in force).
+  XmlRpc::XmlRpcValue parameters;
+  ros::param::get(getPrivateNodeHandle().getNamespace(), parameters);
+  AlgorithmParameters loaded = algorithmParameters(parameters, interfaceParameterNames());
+  if (!loaded.problems.empty()) {
+    NODELET_ERROR("rejected the algorithm parameters in %s; the defaults are in force. Problems:",
+                  getPrivateNodeHandle().getNamespace().c_str());
+    for (const auto& problem : loaded.problems) NODELET_ERROR("  %s", problem.c_str());
+  } else if (loaded.values > 0) {
+    NODELET_INFO("%zu algorithm parameters loaded", loaded.values);
+  }
   try {
-    makeSegmenter(method_, config);
+    makeSegmenter(method_, loaded.config);
   } catch (const std::exception& error) {
-    NODELET_ERROR("%s; using method '%s'", error.what(), defaultMethod().c_str());
+    NODELET_ERROR("~method: %s; using method '%s'", error.what(), defaultMethod().c_str());
     method_ = defaultMethod();
   }
   std::lock_guard<std::mutex> lock(config_mutex_);
-  config_ = config;
+  config_ = loaded.config;
+}
+
+void SegmentationNodelet::startLiveParameters() {
+  for (const auto& problem : liveSectionProblems()) NODELET_ERROR("%s", problem.c_str());
+  SegmentationConfig in_force;
+  {
+    std::lock_guard<std::mutex> lock(config_mutex_);
+    in_force = config_;
+  }
+  // One server per section, in the section's namespace: ~symmetry/filter/s_occl is the live
+  // name and the start-up name at once. They start from the values in force, not from the .cfg
+  // defaults, and write those back to the parameter server.
+  for (const auto& type : liveSectionTypes()) {
+    try {
+      live_sections_.push_back(type.start(ros::NodeHandle(*pnh_, parameterPath(type.section)), reconfigure_mutex_,
+                                          in_force, [this](const ConfigValues& requested) {
+                                            return applyLiveChange(requested);
+                                          }));
+    } catch (const std::exception& error) {  // a generated type the schema does not match
+      NODELET_ERROR("no live parameters in ~%s: %s", parameterPath(type.section).c_str(), error.what());
+    }
+  }
+  interface_server_ = std::make_unique<dynamic_reconfigure::Server<LiveInterfaceConfig>>(reconfigure_mutex_, *pnh_);
+  LiveInterfaceConfig live;
+  live.mode = continuous() ? "continuous" : "on_demand";
+  interface_server_->updateConfig(live);
+  interface_server_->setCallback(
+      [this](LiveInterfaceConfig& config, uint32_t level) { reconfigureInterface(config, level); });
+}
+
+ConfigValues SegmentationNodelet::applyLiveChange(const ConfigValues& requested) {
+  std::lock_guard<std::mutex> lock(config_mutex_);
+  try {
+    const SegmentationConfig next = configWithValues(config_, requested);
+    ConfigValues changed;
+    for (const auto& entry : requested) {
+      const std::string value = configValueText(next, entry.first);
+      if (value != configValueText(config_, entry.first)) changed.emplace_back(entry.first, value);
+    }
+    if (!changed.empty()) NODELET_INFO("live parameters changed: %s", joined(changed).c_str());
+    config_ = next;
+  } catch (const InputError& error) {
+    // As a whole: none of the requested values is taken, and the servers show what is in force.
+    NODELET_ERROR("rejected the live change (%s): %s; the previous values stay in force", joined(requested).c_str(),
+                  error.what());
+  }
+  ConfigValues in_force;
+  for (const auto& entry : requested) in_force.emplace_back(entry.first, configValueText(config_, entry.first));
+  return in_force;
+}
+
+void SegmentationNodelet::reconfigureInterface(LiveInterfaceConfig& live, uint32_t) {
+  if (live.mode != "continuous" && live.mode != "on_demand") {
+    NODELET_ERROR("reconfigure: mode '%s' is neither 'continuous' nor 'on_demand'; unchanged", live.mode.c_str());
+    live.mode = continuous() ? "continuous" : "on_demand";
+  }
+  const bool continuous = live.mode == "continuous";
+  if (continuous != continuous_) NODELET_INFO("mode: %s", live.mode.c_str());
+  continuous_ = continuous;
+  refreshSubscription();
 }
 
 void SegmentationNodelet::onInit() {
   // PCL warns for every field a cloud lacks (e.g. normals): expected here, so errors only.
   pcl::console::setVerbosityLevel(pcl::console::L_ERROR);
-  loadParameters();
-  ros::NodeHandle& pnh = getPrivateNodeHandle();
+  nodelet_topic_tools::NodeletLazy::onInit();  // pnh_, nh_, ~lazy
+  loadInterfaceParameters();
+  loadAlgorithmParameters();
 
   tf_buffer_ = std::make_unique<tf2_ros::Buffer>();
   tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_, getNodeHandle());
-  // The filter delivers clouds once their transform into the processing frame is there; its
-  // queue is short so a missing transform never builds up a backlog.
-  tf_filter_ = std::make_unique<tf2_ros::MessageFilter<sensor_msgs::PointCloud2>>(
-      *tf_buffer_, fixed_frame_.empty() ? std::string("map") : fixed_frame_, 2, pnh);
-  tf_filter_->registerCallback(&SegmentationNodelet::transformedCloudCallback, this);
-  tf_filter_->registerFailureCallback(
-      boost::bind(&SegmentationNodelet::transformFailureCallback, this, boost::placeholders::_1, boost::placeholders::_2));
+  moved_maps_ = std::make_unique<MovedMapCache>(
+      [this](const octomap::OcTree& source, const Eigen::Isometry3d& source_to_frame, const Eigen::AlignedBox3d& region) {
+        Stopwatch watch;
+        auto tree = resampleOccupancy(source, source_to_frame, region);
+        NODELET_INFO("moved the OctoMap over %.2f x %.2f x %.2f m in %.0f ms", region.sizes().x(), region.sizes().y(),
+                     region.sizes().z(), watch.elapsedMs());
+        return tree;
+      },
+      kMapMargin);
+  worker_ = std::make_unique<NewestItemWorker<sensor_msgs::PointCloud2ConstPtr>>(
+      [this](sensor_msgs::PointCloud2ConstPtr& cloud) { segmentFromTopic(cloud); });
 
-  // Lazy like pcl_ros nodelets: ~input is subscribed only while someone listens (continuous).
-  const ros::SubscriberStatusCallback connection = boost::bind(&SegmentationNodelet::updateInputSubscription, this);
-  objects_publisher_ = pnh.advertise<SegmentedObjectArray>("objects", 1, connection, connection);
-  labelled_publisher_ = pnh.advertise<sensor_msgs::PointCloud2>("segmented_cloud", 1, connection, connection);
-  markers_publisher_ = pnh.advertise<visualization_msgs::MarkerArray>("symmetry_markers", 1, connection, connection);
+  // Lazy (NodeletLazy): ~input is subscribed while an output has a subscriber (continuous mode).
+  objects_publisher_ = advertise<SegmentedObjectArray>(*pnh_, "objects", 1);
+  labelled_publisher_ = advertise<sensor_msgs::PointCloud2>(*pnh_, "segmented_cloud", 1);
+  markers_publisher_ = advertise<visualization_msgs::MarkerArray>(*pnh_, "symmetry_markers", 1);
   // The service runs on threads of its own, so long segmentations never block the subscriber
   // callbacks (nor other nodelets of the manager).
-  ros::NodeHandle service_nh(pnh);
+  ros::NodeHandle service_nh(*pnh_);
   service_nh.setCallbackQueue(&service_queue_);
   service_ = service_nh.advertiseService("segment", &SegmentationNodelet::segmentService, this);
   service_spinner_ = std::make_unique<ros::AsyncSpinner>(static_cast<uint32_t>(service_threads_), &service_queue_);
   service_spinner_->start();
-  updateInputSubscription();
-  octomap_subscriber_ = pnh.subscribe("octomap", 1, &SegmentationNodelet::octomapCallback, this);
-  worker_ = std::thread(&SegmentationNodelet::workerLoop, this);  // idles in on_demand mode
+  octomap_subscriber_ = pnh_->subscribe("octomap", 1, &SegmentationNodelet::octomapCallback, this);
+  plane_subscriber_ = pnh_->subscribe("table_plane", 1, &SegmentationNodelet::tablePlaneCallback, this);
+  refreshSubscription();
+  onInitPostProcess();
 
-  // Live tuning. The server starts from the values loaded above (config file, ~mode), not
-  // from the .cfg defaults: updateConfig before setCallback.
-  reconfigure_server_ = std::make_unique<dynamic_reconfigure::Server<symmetry_segmentation::LiveParametersConfig>>(
-      reconfigure_mutex_, getMTPrivateNodeHandle());
-  symmetry_segmentation::LiveParametersConfig live;
-  {
-    std::lock_guard<std::mutex> lock(config_mutex_);
-    live.mode = continuous() ? "continuous" : "on_demand";
-    live.voxel_size = config_.preprocessing.voxel_size;
-    live.s_occl = config_.symmetry.filter.s_occl;
-    live.s_smooth = config_.symmetry.filter.s_smooth;
-    live.lambda_smooth = config_.symmetry.cut.lambda_smooth;
-    live.lambda_sym = config_.symmetry.cut.lambda_sym;
-  }
-  reconfigure_server_->updateConfig(live);
-  reconfigure_server_->setCallback(boost::bind(&SegmentationNodelet::reconfigure, this, boost::placeholders::_1,
-                                               boost::placeholders::_2));
-  NODELET_INFO("symmetry segmentation ready: mode %s, method %s, fixed frame '%s', sensor frame '%s'",
-               continuous() ? "continuous" : "on_demand", method_.c_str(), fixed_frame_.c_str(),
-               sensor_frame_.c_str());
-}
+  diagnostics_ = std::make_unique<diagnostic_updater::Updater>(getNodeHandle(), getPrivateNodeHandle(), getName());
+  diagnostics_->setHardwareID("none");
+  diagnostics_->add("segmentation", this, &SegmentationNodelet::diagnose);
+  // Wall time: a stopped simulated clock (paused bag) must not stop the diagnostics.
+  diagnostics_timer_ = getNodeHandle().createWallTimer(ros::WallDuration(std::max(0.1, diagnostics_->getPeriod())),
+                                                       [this](const ros::WallTimerEvent&) { diagnostics_->force_update(); });
 
-void SegmentationNodelet::reconfigure(symmetry_segmentation::LiveParametersConfig& live, uint32_t) {
-  SegmentationConfig config;
-  {
-    std::lock_guard<std::mutex> lock(config_mutex_);
-    config = config_;
-  }
-  const std::pair<const char*, double> values[] = {{"preprocessing.voxel_size", live.voxel_size},
-                                                   {"symmetry.filter.s_occl", live.s_occl},
-                                                   {"symmetry.filter.s_smooth", live.s_smooth},
-                                                   {"symmetry.cut.lambda_smooth", live.lambda_smooth},
-                                                   {"symmetry.cut.lambda_sym", live.lambda_sym}};
-  for (const auto& [key, value] : values) {
-    try {
-      std::ostringstream text;
-      text << std::setprecision(17) << value;
-      setConfigValue(config, key, text.str());
-    } catch (const std::exception& error) {
-      NODELET_ERROR("reconfigure: ignoring %s = %g: %s", key, value, error.what());
-    }
-  }
-  {
-    std::lock_guard<std::mutex> lock(config_mutex_);
-    config_ = config;
-  }
-  if (live.mode != "continuous" && live.mode != "on_demand") {
-    NODELET_ERROR("reconfigure: mode '%s' is neither 'continuous' nor 'on_demand'; unchanged", live.mode.c_str());
-    live.mode = continuous() ? "continuous" : "on_demand";
-  }
-  continuous_ = live.mode == "continuous";
-  updateInputSubscription();
-  NODELET_INFO("reconfigured: mode %s, voxel_size %g, s_occl %g, s_smooth %g, lambda_smooth %g, lambda_sym %g",
-               live.mode.c_str(), live.voxel_size, live.s_occl, live.s_smooth, live.lambda_smooth, live.lambda_sym);
+  startLiveParameters();  // last: tests wait for its services as "the node is ready"
+  NODELET_INFO("symmetry segmentation ready: mode %s, method %s, fixed frame '%s', sensor frame '%s', table plane %s",
+               continuous() ? "continuous" : "on_demand", method_.c_str(), fixed_frame_.c_str(), sensor_frame_.c_str(),
+               plane_parameter_ ? "from ~table_plane" : "estimated unless published on ~table_plane");
 }
 
 bool SegmentationNodelet::hasOutputSubscribers() const {
@@ -201,23 +296,39 @@ bool SegmentationNodelet::hasOutputSubscribers() const {
          markers_publisher_.getNumSubscribers() > 0;
 }
 
+bool SegmentationNodelet::inputWanted() const {
+  return !continuous() || !lazy_ || latest_waiters_ > 0 || hasOutputSubscribers();
+}
+
+void SegmentationNodelet::subscribe() {
+  if (stopping_ || cloud_subscriber_) return;
+  cloud_subscriber_ = pnh_->subscribe("input", 1, &SegmentationNodelet::cloudCallback, this);
+  ever_subscribed_ = true;
+  NODELET_DEBUG("subscribed to %s", cloud_subscriber_.getTopic().c_str());
+}
+
+void SegmentationNodelet::unsubscribe() {
+  if (!cloud_subscriber_ || inputWanted()) return;
+  NODELET_DEBUG("unsubscribing from %s: nobody listens", cloud_subscriber_.getTopic().c_str());
+  cloud_subscriber_.shutdown();
+}
+
+void SegmentationNodelet::refreshSubscription() {
+  boost::mutex::scoped_lock lock(connection_mutex_);
+  if (stopping_) return;
+  if (inputWanted()) {
+    subscribe();
+    connection_status_ = nodelet_topic_tools::SUBSCRIBED;
+  } else {
+    unsubscribe();
+    connection_status_ = nodelet_topic_tools::NOT_SUBSCRIBED;
+  }
+}
+
 std::string SegmentationNodelet::processingFrame(const std::string& cloud_frame) const {
   if (!fixed_frame_.empty()) return fixed_frame_;
   std::lock_guard<std::mutex> lock(inputs_mutex_);
   return map_.tree ? map_.frame : cloud_frame;
-}
-
-void SegmentationNodelet::updateInputSubscription() {
-  std::lock_guard<std::mutex> lock(subscription_mutex_);
-  if (stopping_) return;
-  const bool wanted = !continuous() || hasOutputSubscribers() || latest_waiters_ > 0;
-  if (wanted && !cloud_subscriber_) {
-    cloud_subscriber_ = getPrivateNodeHandle().subscribe("input", 1, &SegmentationNodelet::cloudCallback, this);
-    NODELET_DEBUG("subscribed to %s", cloud_subscriber_.getTopic().c_str());
-  } else if (!wanted && cloud_subscriber_) {
-    NODELET_DEBUG("unsubscribing from %s: nobody listens", cloud_subscriber_.getTopic().c_str());
-    cloud_subscriber_.shutdown();
-  }
 }
 
 void SegmentationNodelet::handleTimeJump() {
@@ -234,14 +345,32 @@ void SegmentationNodelet::handleTimeJump() {
   if (back <= ros::Duration(kTimeJumpTolerance)) return;
   NODELET_WARN("ROS time moved backwards by %.3f s (restarted bag?): clearing the tf buffer", back.toSec());
   tf_buffer_->clear();
-  tf_filter_->clear();
-  {
-    // A cloud waiting from before the jump is stamped in the new "future": no transform for it.
-    std::lock_guard<std::mutex> lock(queue_mutex_);
-    pending_cloud_.reset();
+  // A cloud waiting from before the jump is stamped in the new "future": no transform for it.
+  worker_->clear();
+  moved_maps_->clear();
+}
+
+Eigen::Isometry3d SegmentationNodelet::transform(const std::string& target, const std::string& source,
+                                                 const ros::Time& stamp, const ros::Duration& timeout,
+                                                 const std::string& what) const {
+  // Against the wall clock: with use_sim_time a stopped player stops the clock, and tf2's own
+  // timeout (in ROS time) would then never expire.
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(std::max(0.0, timeout.toSec()));
+  std::string error;
+  while (true) {
+    error.clear();
+    if (tf_buffer_->canTransform(target, source, stamp, &error)) {
+      try {
+        return tf2::transformToEigen(tf_buffer_->lookupTransform(target, source, stamp));
+      } catch (const tf2::TransformException& exception) {
+        error = exception.what();  // gone in between (buffer cleared): wait on
+      }
+    }
+    if (ros::WallTime::now() >= deadline || !ros::ok() || stopping_) break;
+    ros::WallDuration(0.01).sleep();
   }
-  std::lock_guard<std::mutex> lock(moved_map_mutex_);
-  moved_map_ = MovedMap();
+  throw RequestError(Response::TRANSFORM_FAILED, "no transform from " + what + " frame '" + source +
+                                                     "' to processing frame '" + target + "': " + error);
 }
 
 void SegmentationNodelet::cloudCallback(const sensor_msgs::PointCloud2ConstPtr& cloud) {
@@ -261,32 +390,7 @@ void SegmentationNodelet::cloudCallback(const sensor_msgs::PointCloud2ConstPtr& 
   cloud_arrived_.notify_all();
   // Lazy: in continuous mode without anyone listening, caching the pointer is all we do.
   if (!continuous() || !hasOutputSubscribers()) return;
-  const std::string target = processingFrame(cloud->header.frame_id);
-  if (target == cloud->header.frame_id) {
-    transformedCloudCallback(cloud);
-    return;
-  }
-  if (tf_filter_->getTargetFramesString() != target) tf_filter_->setTargetFrame(target);
-  tf_filter_->add(cloud);
-}
-
-void SegmentationNodelet::transformedCloudCallback(const sensor_msgs::PointCloud2ConstPtr& cloud) {
-  {
-    std::lock_guard<std::mutex> lock(queue_mutex_);
-    if (pending_cloud_) ++dropped_clouds_;  // busy: the newest cloud replaces the stale one
-    pending_cloud_ = cloud;
-  }
-  queue_changed_.notify_one();
-}
-
-void SegmentationNodelet::transformFailureCallback(const sensor_msgs::PointCloud2ConstPtr& cloud,
-                                                   tf2_ros::filter_failure_reasons::FilterFailureReason reason) {
-  NODELET_WARN_THROTTLE(5.0, "dropping cloud in frame '%s' at %.3f: no transform into '%s' (%s)",
-                        cloud->header.frame_id.c_str(), cloud->header.stamp.toSec(),
-                        tf_filter_->getTargetFramesString().c_str(),
-                        reason == tf2_ros::filter_failure_reasons::OutTheBack ? "too old"
-                        : reason == tf2_ros::filter_failure_reasons::EmptyFrameID ? "empty frame id"
-                                                                                    : "transform unavailable");
+  worker_->push(cloud);
 }
 
 void SegmentationNodelet::octomapCallback(const OctomapMessage::ConstPtr& message) {
@@ -302,22 +406,33 @@ void SegmentationNodelet::octomapCallback(const OctomapMessage::ConstPtr& messag
   }
 }
 
-void SegmentationNodelet::workerLoop() {
-  while (true) {
-    sensor_msgs::PointCloud2ConstPtr cloud;
-    {
-      std::unique_lock<std::mutex> lock(queue_mutex_);
-      queue_changed_.wait(lock, [this] { return stopping_ || pending_cloud_; });
-      if (stopping_) return;
-      cloud.swap(pending_cloud_);
-    }
-    if (!continuous() || !hasOutputSubscribers()) continue;
-    const Outcome outcome = process(*cloud, ros::Duration(transform_timeout_), std::nullopt);
-    if (outcome.status == Response::INVALID_INPUT) {
-      NODELET_WARN_THROTTLE(5.0, "cloud not segmented: %s", outcome.message.c_str());
-    } else if (outcome.status != Response::SUCCESS) {
-      NODELET_ERROR_THROTTLE(5.0, "segmentation failed (status %d): %s", outcome.status, outcome.message.c_str());
-    }
+void SegmentationNodelet::tablePlaneCallback(const pcl_msgs::ModelCoefficients::ConstPtr& message) {
+  handleTimeJump();
+  if (message->values.empty()) {
+    // Withdrawn: back to ~table_plane (the parameter) or the estimate.
+    std::lock_guard<std::mutex> lock(inputs_mutex_);
+    if (plane_topic_) NODELET_INFO("table plane withdrawn on ~table_plane");
+    plane_topic_.reset();
+    return;
+  }
+  try {
+    if (message->header.frame_id.empty()) throw InputError("header.frame_id is empty: the plane's frame is unknown");
+    const Eigen::Vector4d plane = planeFromCoefficients(std::vector<double>(message->values.begin(), message->values.end()));
+    std::lock_guard<std::mutex> lock(inputs_mutex_);
+    plane_topic_ = GivenPlane{plane, message->header.frame_id, message->header.stamp, "topic"};
+  } catch (const InputError& error) {
+    NODELET_ERROR_THROTTLE(5.0, "ignoring table plane on ~table_plane: %s", error.what());
+  }
+}
+
+void SegmentationNodelet::segmentFromTopic(sensor_msgs::PointCloud2ConstPtr& cloud) {
+  if (!continuous() || !hasOutputSubscribers()) return;
+  const Outcome outcome = process(*cloud, ros::Duration(transform_timeout_), std::nullopt);
+  if (outcome.status == Response::INVALID_INPUT) {
+    NODELET_WARN_THROTTLE(5.0, "cloud not segmented: %s", outcome.message.c_str());
+  } else if (outcome.status != Response::SUCCESS) {
+    NODELET_ERROR_THROTTLE(5.0, "segmentation failed (%s): %s", statusName(outcome.status).c_str(),
+                           outcome.message.c_str());
   }
 }
 
@@ -325,61 +440,56 @@ SegmentationNodelet::Outcome SegmentationNodelet::process(const sensor_msgs::Poi
                                                           const ros::Duration& timeout,
                                                           const std::optional<AxisAlignedBox>& roi) {
   Outcome outcome;
+  Stopwatch total_watch;
   try {
-    Stopwatch prepare_watch;
     CloudCheckOptions check;
     check.max_points = static_cast<std::size_t>(max_input_points_);
     const std::string problem = cloudMessageProblem(cloud, check);
     if (!problem.empty()) throw RequestError(Response::INVALID_INPUT, problem);
     const std::string frame = processingFrame(cloud.header.frame_id);
+    const ros::Time stamp = cloud.header.stamp;
     SceneInputs inputs;
     inputs.region_of_interest = roi;
-    const ros::Time stamp = cloud.header.stamp;
+    // Every frame goes the same way into the processing frame: transform() at the cloud's stamp
+    // (the plane: at its own), waiting up to `timeout`.
     if (frame != cloud.header.frame_id) {
-      std::string error;
-      if (!waitForTransform(*tf_buffer_, frame, cloud.header.frame_id, stamp, timeout, &error)) {
-        throw RequestError(Response::TRANSFORM_FAILED, "no transform from cloud frame '" + cloud.header.frame_id +
-                                                           "' to processing frame '" + frame + "': " + error);
-      }
-      inputs.cloud_to_processing = tf2::transformToEigen(tf_buffer_->lookupTransform(frame, cloud.header.frame_id, stamp));
+      inputs.cloud_to_processing = transform(frame, cloud.header.frame_id, stamp, timeout, "cloud");
     }
     CachedMap map;
+    std::optional<GivenPlane> plane;
     {
       std::lock_guard<std::mutex> lock(inputs_mutex_);
       map = map_;
+      plane = plane_topic_ ? plane_topic_ : plane_parameter_;
     }
     if (map.tree && map.frame == frame) {
       inputs.occupancy = map.tree;
     } else if (map.tree) {
       // A map in another frame is moved into the processing frame with the transform at the
       // cloud's stamp (where the world was relative to the processing frame when it was seen).
-      std::string error;
-      if (!waitForTransform(*tf_buffer_, frame, map.frame, stamp, timeout, &error)) {
-        throw RequestError(Response::TRANSFORM_FAILED, "no transform from the OctoMap's frame '" + map.frame +
-                                                           "' to processing frame '" + frame + "': " + error);
-      }
-      const Eigen::Isometry3d map_to_frame = tf2::transformToEigen(tf_buffer_->lookupTransform(frame, map.frame, stamp));
+      const Eigen::Isometry3d map_to_frame = transform(frame, map.frame, stamp, timeout, "the OctoMap's");
       inputs.occupancy_for_region = [this, map, frame, map_to_frame](const Eigen::AlignedBox3d& box) {
-        return movedMap(map.tree, frame, map_to_frame, box);
+        return moved_maps_->get(map.tree, frame, map_to_frame, box);
       };
     }
-    {
-      if (!sensor_frame_.empty()) {
-        std::string error;
-        if (!waitForTransform(*tf_buffer_, frame, sensor_frame_, stamp, timeout, &error)) {
-          throw RequestError(Response::TRANSFORM_FAILED, "no transform from sensor frame '" + sensor_frame_ +
-                                                             "' to processing frame '" + frame + "': " + error);
-        }
-        inputs.sensor_origin = tf2::transformToEigen(tf_buffer_->lookupTransform(frame, sensor_frame_, stamp))
-                                   .translation()
-                                   .cast<float>();
-      } else if (frame != cloud.header.frame_id) {
-        // The cloud's own viewpoint: the origin of the frame it was measured in.
-        inputs.sensor_origin = inputs.cloud_to_processing.translation().cast<float>();
+    if (!sensor_frame_.empty()) {
+      inputs.sensor_origin = transform(frame, sensor_frame_, stamp, timeout, "sensor").translation().cast<float>();
+    } else if (frame != cloud.header.frame_id) {
+      // The cloud's own viewpoint: the origin of the frame it was measured in.
+      inputs.sensor_origin = inputs.cloud_to_processing.translation().cast<float>();
+    }
+    std::string plane_note = "table plane estimated";
+    if (plane) {
+      Eigen::Vector4d in_frame = plane->plane;
+      if (!plane->frame.empty() && plane->frame != frame) {
+        const ros::Time plane_stamp = plane->stamp.isZero() ? stamp : plane->stamp;
+        in_frame = transformPlane(plane->plane, transform(frame, plane->frame, plane_stamp, timeout, "the table plane's"));
       }
+      inputs.table_plane = toPlaneCoefficients(in_frame);
+      plane_note = "table plane from ~table_plane (" + plane->source + ")";
     }
     const Scene scene = assembleScene(cloud, inputs);
-    const double prepare_ms = prepare_watch.elapsedMs();
+    const double prepare_ms = total_watch.elapsedMs();
 
     SegmentationConfig config;
     {
@@ -412,9 +522,9 @@ SegmentationNodelet::Outcome SegmentationNodelet::process(const sensor_msgs::Poi
       if (stage.first != "total") outcome.timings.push_back(stage);
     }
     outcome.timings.emplace_back("publish", publish_watch.elapsedMs());
-    outcome.timings.emplace_back("total", prepare_watch.elapsedMs());
-    outcome.message = std::to_string(result.segments.size()) + " objects from " +
-                      std::to_string(scene.size()) + " points in frame '" + frame + "'";
+    outcome.timings.emplace_back("total", total_watch.elapsedMs());
+    outcome.message = std::to_string(result.segments.size()) + " objects from " + std::to_string(scene.size()) +
+                      " points in frame '" + frame + "', " + plane_note;
   } catch (const RequestError& error) {
     outcome.status = error.status();
     outcome.message = error.what();
@@ -422,29 +532,54 @@ SegmentationNodelet::Outcome SegmentationNodelet::process(const sensor_msgs::Poi
     outcome.status = Response::SEGMENTATION_FAILED;
     outcome.message = error.what();
   }
+  record(outcome, total_watch.elapsedMs());
   return outcome;
 }
 
-std::shared_ptr<octomap::OcTree> SegmentationNodelet::movedMap(const std::shared_ptr<octomap::OcTree>& map,
-                                                               const std::string& frame,
-                                                               const Eigen::Isometry3d& map_to_frame,
-                                                               const Eigen::AlignedBox3d& box) {
-  // One entry, computed under the lock: concurrent calls for the same map wait for it once.
-  std::lock_guard<std::mutex> lock(moved_map_mutex_);
-  if (moved_map_.tree && moved_map_.source == map && moved_map_.frame == frame &&
-      moved_map_.source_to_frame.matrix() == map_to_frame.matrix() && moved_map_.region.contains(box)) {
-    return moved_map_.tree;
+void SegmentationNodelet::record(const Outcome& outcome, double duration_ms) {
+  std::lock_guard<std::mutex> lock(statistics_mutex_);
+  if (outcome.status == Response::SUCCESS) {
+    ++statistics_.segmented;
+  } else {
+    ++statistics_.failed;
   }
-  moved_map_ = MovedMap();  // the old copy goes before the new one is built
-  // Some slack, so the next cloud of a slightly different extent still fits.
-  const Eigen::Vector3d slack = Eigen::Vector3d::Constant(kMapMargin);
-  const Eigen::AlignedBox3d region(box.min() - slack, box.max() + slack);
-  Stopwatch watch;
-  auto tree = resampleOccupancy(*map, map_to_frame, region);
-  NODELET_INFO("moved the OctoMap into frame '%s' over %.2f x %.2f x %.2f m in %.0f ms", frame.c_str(),
-               region.sizes().x(), region.sizes().y(), region.sizes().z(), watch.elapsedMs());
-  moved_map_ = MovedMap{map, frame, map_to_frame, region, tree};
-  return tree;
+  statistics_.any = true;
+  statistics_.last_duration_ms = duration_ms;
+  statistics_.last_status = outcome.status;
+  statistics_.last_message = outcome.message;
+}
+
+void SegmentationNodelet::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  bool subscribed = false;
+  {
+    boost::mutex::scoped_lock lock(connection_mutex_);
+    subscribed = cloud_subscriber_;
+  }
+  const std::size_t dropped = worker_ ? worker_->dropped() : 0;
+  std::lock_guard<std::mutex> lock(statistics_mutex_);
+  Statistics& s = statistics_;
+  const ros::WallTime now = ros::WallTime::now();
+  const double elapsed = s.last_report.isZero() ? 0.0 : (now - s.last_report).toSec();
+  const double rate = elapsed > 0.0 ? static_cast<double>(s.segmented - s.segmented_at_last_report) / elapsed : 0.0;
+  s.last_report = now;
+  s.segmented_at_last_report = s.segmented;
+  if (!s.any) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "no segmentation yet");
+  } else if (s.last_status == Response::SUCCESS) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, s.last_message);
+  } else {
+    status.summaryf(diagnostic_msgs::DiagnosticStatus::WARN, "last segmentation failed (%s): %s",
+                    statusName(s.last_status).c_str(), s.last_message.c_str());
+  }
+  status.add("mode", continuous() ? "continuous" : "on_demand");
+  status.add("method", method_);
+  status.add("input subscribed", subscribed);
+  status.addf("segmentation rate (Hz)", "%.3f", rate);
+  status.add("segmented clouds", s.segmented);
+  status.add("failed segmentations", s.failed);
+  status.addf("last duration (ms)", "%.1f", s.last_duration_ms);
+  status.add("last status", s.any ? statusName(s.last_status) : std::string("none"));
+  status.add("dropped clouds", dropped);
 }
 
 bool SegmentationNodelet::segmentService(SegmentCloud::Request& request, SegmentCloud::Response& response) {
@@ -461,22 +596,16 @@ bool SegmentationNodelet::segmentService(SegmentCloud::Request& request, Segment
     }
     if (!cloud && timeout > 0.0) {
       // Continuous mode without output subscribers does not subscribe ~input: do for the wait.
-      {
-        std::lock_guard<std::mutex> lock(subscription_mutex_);
-        ++latest_waiters_;
-      }
-      updateInputSubscription();
+      ++latest_waiters_;
+      refreshSubscription();
       {
         std::unique_lock<std::mutex> lock(inputs_mutex_);
         cloud_arrived_.wait_for(lock, std::chrono::duration<double>(timeout),
                                 [this] { return latest_cloud_ != nullptr || stopping_; });
         cloud = latest_cloud_;
       }
-      {
-        std::lock_guard<std::mutex> lock(subscription_mutex_);
-        --latest_waiters_;
-      }
-      updateInputSubscription();
+      --latest_waiters_;
+      refreshSubscription();
     }
     if (!cloud) {
       response.status = timeout > 0.0 ? Response::TIMEOUT : Response::NO_CLOUD;

@@ -8,6 +8,7 @@
 #include <octomap/OcTree.h>
 #include <pcl/console/print.h>
 #include <pcl_conversions/pcl_conversions.h>
+#include <pcl_msgs/ModelCoefficients.h>
 #include <rosbag/bag.h>
 #include <tf2_msgs/TFMessage.h>
 
@@ -22,7 +23,8 @@ namespace {
 
 const char* const kUsage =
     "usage: scene_to_bag <scene> --output FILE.bag [--clouds N] [--rate HZ] [--voxel M] [--frame F]\n"
-    "                    [--camera-frame F] [--cloud-topic T] [--octomap-topic T] [--full-octomap]\n"
+    "                    [--camera-frame F] [--cloud-topic T] [--octomap-topic T] [--plane-topic T]\n"
+    "                    [--full-octomap]\n"
     "  <scene>          scene directory (cloud.ply, occupancy.bt, scene_info.yaml) or cloud file\n"
     "  --clouds         cloud messages to write (default 3), one every 1/rate s\n"
     "  --rate           cloud rate in Hz (default 1)\n"
@@ -30,11 +32,13 @@ const char* const kUsage =
     "  --frame          frame of the cloud and the map (default map)\n"
     "  --camera-frame   static tf child at the first sensor origin (default camera)\n"
     "  --cloud-topic    default /kinfu/cloud;  --octomap-topic default /octomap_binary\n"
+    "  --plane-topic    the scene's table_plane.txt, if any, latched as pcl_msgs/ModelCoefficients\n"
+    "                   in the map frame (default /table_plane; empty: not written)\n"
     "  --full-octomap   write the map as a full (.ot) message instead of a binary one\n";
 
 struct Options {
   std::string scene, output, frame = "map", camera_frame = "camera";
-  std::string cloud_topic = "/kinfu/cloud", octomap_topic = "/octomap_binary";
+  std::string cloud_topic = "/kinfu/cloud", octomap_topic = "/octomap_binary", plane_topic = "/table_plane";
   int clouds = 3;
   double rate = 1.0, voxel = 0.0;
   bool full_octomap = false;
@@ -64,6 +68,8 @@ Options parse(int argc, char** argv) {
       options.cloud_topic = arguments.value();
     } else if (arg == "--octomap-topic") {
       options.octomap_topic = arguments.value();
+    } else if (arg == "--plane-topic") {
+      options.plane_topic = arguments.value();
     } else if (arg == "--full-octomap") {
       options.full_octomap = true;
     } else if (!arg.empty() && arg[0] == '-') {
@@ -135,6 +141,14 @@ int main(int argc, char** argv) {
     map.header.stamp = start;
     bag.write(options.octomap_topic, start, map, latched<ss::OctomapMessage>());
 
+    if (scene.table_plane && !options.plane_topic.empty()) {
+      pcl_msgs::ModelCoefficients plane;
+      plane.header.frame_id = options.frame;
+      plane.header.stamp = start;
+      plane.values.assign(scene.table_plane->data(), scene.table_plane->data() + 4);
+      bag.write(options.plane_topic, start, plane, latched<pcl_msgs::ModelCoefficients>());
+    }
+
     sensor_msgs::PointCloud2 message;
     pcl::toROSMsg(cloud, message);
     message.header.frame_id = options.frame;
@@ -147,6 +161,7 @@ int main(int argc, char** argv) {
     bag.close();
     std::cout << "wrote " << options.output << ": " << options.clouds << " clouds of " << cloud.size()
               << " points on " << options.cloud_topic << ", OctoMap on " << options.octomap_topic
+              << (scene.table_plane && !options.plane_topic.empty() ? ", table plane on " + options.plane_topic : "")
               << ", tf " << options.frame << " -> " << options.camera_frame << "\n";
     return 0;
   } catch (const std::exception& error) {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include <pcl/console/print.h>
+#include <pcl_msgs/ModelCoefficients.h>
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
 #include <tf2/buffer_core.h>
@@ -18,6 +19,7 @@
 #include "symmetry_segmentation/ros/octomap_conversion.h"
 #include "symmetry_segmentation/ros/result_conversion.h"
 #include "symmetry_segmentation/ros/scene_assembly.h"
+#include "symmetry_segmentation/ros/table_plane.h"
 #include "symmetry_segmentation/segmenter.h"
 #include "symmetry_segmentation/stopwatch.h"
 
@@ -34,7 +36,9 @@ const char* const kUsage =
     "  --prefix       namespace of the output topics (default /segmentation):\n"
     "                 P/objects, P/segmented_cloud, P/symmetry_markers\n"
     "  Clouds are segmented with the latest octomap_msgs/Octomap in their frame; without one,\n"
-    "  occupancy is ray-cast from the cloud frame's origin. Exit code 1 if any cloud failed.\n";
+    "  occupancy is ray-cast from the cloud frame's origin. The latest pcl_msgs/ModelCoefficients\n"
+    "  before a cloud is its table plane (moved into the cloud's frame through the bag's tf);\n"
+    "  without one the table is estimated. Exit code 1 if any cloud failed.\n";
 
 struct Options {
   std::string input, output, cloud_topic, sensor_frame, prefix = "/segmentation", method = ss::defaultMethod(), config;
@@ -95,6 +99,7 @@ int main(int argc, char** argv) {
     tf2::BufferCore transforms(ros::Duration(3600.0));
     std::shared_ptr<octomap::OcTree> map;
     std::string map_frame;
+    pcl_msgs::ModelCoefficients::ConstPtr plane;
     std::size_t segmented = 0, failed = 0;
     ros::Time first, last;
     ss::Stopwatch watch;
@@ -111,6 +116,11 @@ int main(int argc, char** argv) {
         } catch (const std::exception& error) {
           std::cerr << "segment_bag: skipping OctoMap at " << instance.getTime() << ": " << error.what() << "\n";
         }
+        continue;
+      }
+      if (instance.getDataType() == "pcl_msgs/ModelCoefficients") {
+        plane = instance.instantiate<pcl_msgs::ModelCoefficients>();
+        if (plane && plane->values.empty()) plane.reset();  // withdrawn
         continue;
       }
       if (instance.getDataType() == "tf2_msgs/TFMessage") {
@@ -136,6 +146,16 @@ int main(int argc, char** argv) {
                                      .cast<float>();
         } else if (!inputs.occupancy) {
           inputs.sensor_origin = Eigen::Vector3f::Zero();  // the cloud frame's origin
+        }
+        if (plane) {
+          // As the node does: the plane's frame moved into the cloud's at the plane's stamp.
+          Eigen::Vector4d coefficients = ss::planeFromCoefficients(std::vector<double>(plane->values.begin(), plane->values.end()));
+          if (plane->header.frame_id != cloud->header.frame_id) {
+            const ros::Time stamp = plane->header.stamp.isZero() ? cloud->header.stamp : plane->header.stamp;
+            coefficients = ss::transformPlane(coefficients, tf2::transformToEigen(transforms.lookupTransform(
+                                                                cloud->header.frame_id, plane->header.frame_id, stamp)));
+          }
+          inputs.table_plane = ss::toPlaneCoefficients(coefficients);
         }
         const ss::Scene scene = ss::assembleScene(*cloud, inputs);
         const ss::SegmentationResult result = segmenter->segment(scene);

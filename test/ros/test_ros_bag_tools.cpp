@@ -11,6 +11,7 @@
 #include <string>
 
 #include <boost/filesystem.hpp>
+#include <pcl_msgs/ModelCoefficients.h>
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
 #include <sensor_msgs/PointCloud2.h>
@@ -60,9 +61,13 @@ TEST(BagTools, SceneToBagThenSegmentBag) {
         EXPECT_EQ(connection->header->at("latching"), "1");
       }
     }
-    EXPECT_EQ(topics, (std::set<std::string>{"/kinfu/cloud", "/octomap_binary", "/tf_static"}));
+    EXPECT_EQ(topics, (std::set<std::string>{"/kinfu/cloud", "/octomap_binary", "/table_plane", "/tf_static"}));
     std::size_t maps = 0;
     for (const auto& instance : view) {
+      if (auto plane = instance.instantiate<pcl_msgs::ModelCoefficients>()) {
+        EXPECT_EQ(plane->header.frame_id, "map");
+        EXPECT_EQ(plane->values, (std::vector<float>{0, 0, 1, 0})) << "data/default_scene/table_plane.txt";
+      }
       if (auto map = instance.instantiate<ss::OctomapMessage>()) {
         EXPECT_FALSE(map->binary);  // --full-octomap
         EXPECT_EQ(map->id, "OcTree");

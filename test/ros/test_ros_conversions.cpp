@@ -13,6 +13,7 @@
 #include "symmetry_segmentation/errors.h"
 #include "symmetry_segmentation/ros/cloud_conversion.h"
 #include "symmetry_segmentation/ros/marker_conversion.h"
+#include "symmetry_segmentation/parameter_schema.h"
 #include "symmetry_segmentation/ros/parameters.h"
 #include "symmetry_segmentation/ros/result_conversion.h"
 #include "symmetry_segmentation/ros/scene_assembly.h"
@@ -500,24 +501,106 @@ TEST(MarkerConversion, ObjectListCountsUsablePointsAndShowsScores) {
             "2 objects\n1: 3 points, occlusion 0.991, smoothness 0.012\n2: 2 points");
 }
 
-TEST(Parameters, NestedNamespacesSetTheSameKeysAsTheYamlFile) {
-  XmlRpc::XmlRpcValue symmetry;
-  symmetry["filter"]["s_occl"] = 0.97;
-  symmetry["filter"]["min_segment_points"] = 55;
-  symmetry["curves"]["min_curve_points"] = 7;
-  symmetry["filter"]["no_such_key"] = 1.0;
-  ss::SegmentationConfig config;
-  std::vector<std::string> errors;
-  ss::applyParameters("symmetry", symmetry, config, errors);
-  EXPECT_FLOAT_EQ(config.symmetry.filter.s_occl, 0.97f);
-  EXPECT_EQ(config.symmetry.filter.min_segment_points, 55);
-  EXPECT_EQ(config.symmetry.curves.min_curve_points, 7);
-  ASSERT_EQ(errors.size(), 1u);
-  EXPECT_NE(errors[0].find("symmetry.filter.no_such_key"), std::string::npos);
+namespace {
 
-  XmlRpc::XmlRpcValue preprocessing;
-  preprocessing["voxel_size"] = 0.02;
-  ss::applyParameters("preprocessing", preprocessing, config, errors);
-  EXPECT_FLOAT_EQ(config.preprocessing.voxel_size, 0.02f);
-  EXPECT_EQ(errors.size(), 1u);
+bool mentions(const std::vector<std::string>& problems, const std::string& text) {
+  for (const auto& problem : problems) {
+    if (problem.find(text) != std::string::npos) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+TEST(Parameters, NestedNamespacesSetTheSameKeysAsTheYamlFile) {
+  XmlRpc::XmlRpcValue parameters;
+  parameters["symmetry"]["filter"]["s_occl"] = 0.97;
+  parameters["symmetry"]["filter"]["min_segment_points"] = 55;
+  parameters["symmetry"]["curves"]["min_curve_points"] = 7;
+  parameters["preprocessing"]["voxel_size"] = 0.02;
+  parameters["mode"] = "on_demand";  // interface parameters are the node's, not the core's
+  parameters["fixed_frame"] = "map";
+  const auto loaded = ss::algorithmParameters(parameters, {"mode", "fixed_frame"});
+  EXPECT_TRUE(loaded.problems.empty()) << loaded.problems.front();
+  EXPECT_EQ(loaded.values, 4u);
+  EXPECT_FLOAT_EQ(loaded.config.symmetry.filter.s_occl, 0.97f);
+  EXPECT_EQ(loaded.config.symmetry.filter.min_segment_points, 55);
+  EXPECT_EQ(loaded.config.symmetry.curves.min_curve_points, 7);
+  EXPECT_FLOAT_EQ(loaded.config.preprocessing.voxel_size, 0.02f);
+  // The same as the YAML file with those values.
+  const auto from_yaml = ss::configWithValues(ss::SegmentationConfig(), {{"symmetry.filter.s_occl", "0.97"},
+                                                                         {"symmetry.filter.min_segment_points", "55"},
+                                                                         {"symmetry.curves.min_curve_points", "7"},
+                                                                         {"preprocessing.voxel_size", "0.02"}});
+  for (const auto& info : ss::parameterSchema()) {
+    EXPECT_EQ(ss::configValueText(loaded.config, info.key), ss::configValueText(from_yaml, info.key)) << info.key;
+  }
+}
+
+TEST(Parameters, OneBadValueRejectsTheWholeConfigurationNamingEveryProblem) {
+  // s_occl 1.5 is out of range: the valid s_smooth is not taken either (defaults in force), and
+  // both problems are named.
+  XmlRpc::XmlRpcValue parameters;
+  parameters["symmetry"]["filter"]["s_occl"] = 1.5;
+  parameters["symmetry"]["filter"]["s_smooth"] = 0.05;
+  parameters["lccp"]["voxel_resolution"] = 0.1;  // not below seed_resolution 0.04: a rule
+  const auto loaded = ss::algorithmParameters(parameters, {});
+  ASSERT_FALSE(loaded.problems.empty());
+  EXPECT_TRUE(mentions(loaded.problems, "s_occl")) << loaded.problems.front();
+  EXPECT_TRUE(mentions(loaded.problems, "voxel_resolution")) << loaded.problems.front();
+  const ss::SegmentationConfig defaults;
+  EXPECT_FLOAT_EQ(loaded.config.symmetry.filter.s_occl, defaults.symmetry.filter.s_occl);
+  EXPECT_FLOAT_EQ(loaded.config.symmetry.filter.s_smooth, defaults.symmetry.filter.s_smooth);
+}
+
+TEST(Parameters, UnknownNamesAreProblemsNamedTheRosWay) {
+  XmlRpc::XmlRpcValue parameters;
+  parameters["symmetry"]["filtr"]["s_occl"] = 0.97;   // a typo in a section
+  parameters["symmetry"]["filter"]["s_ocl"] = 0.97;   // a typo in a key
+  parameters["sesnor_frame"] = "camera";              // a typo of an interface parameter
+  parameters["symmetry"]["filter"]["s_smooth"] = 0.05;
+  const auto loaded = ss::algorithmParameters(parameters, {"sensor_frame"});
+  EXPECT_EQ(loaded.problems.size(), 3u);
+  EXPECT_TRUE(mentions(loaded.problems, "~symmetry/filtr/s_occl"));
+  EXPECT_TRUE(mentions(loaded.problems, "~symmetry/filter/s_ocl"));
+  EXPECT_TRUE(mentions(loaded.problems, "~sesnor_frame"));
+  EXPECT_FLOAT_EQ(loaded.config.symmetry.filter.s_smooth, ss::SegmentationConfig().symmetry.filter.s_smooth)
+      << "rejected as a whole";
+}
+
+TEST(Parameters, AListParameterIsAYamlList) {
+  // symmetry.stages (a string_list) from `rosparam load` arrives as an XmlRpc array.
+  XmlRpc::XmlRpcValue parameters;
+  const std::vector<std::string> stages = ss::SegmentationConfig().symmetry.stages;
+  ASSERT_GT(stages.size(), 2u);
+  const std::vector<std::string> fewer(stages.begin(), stages.end() - 1);
+  for (std::size_t i = 0; i < fewer.size(); ++i) parameters["symmetry"]["stages"][static_cast<int>(i)] = fewer[i];
+  ASSERT_EQ(stages.back(), "object_bottoms");  // a stage the list can run without
+  const auto loaded = ss::algorithmParameters(parameters, {});
+  EXPECT_TRUE(loaded.problems.empty()) << loaded.problems.front();
+  EXPECT_EQ(loaded.config.symmetry.stages, fewer);
+  XmlRpc::XmlRpcValue bad;
+  bad["symmetry"]["stages"][0] = "no_such_stage";
+  const auto rejected = ss::algorithmParameters(bad, {});
+  ASSERT_FALSE(rejected.problems.empty());
+  EXPECT_TRUE(mentions(rejected.problems, "no_such_stage")) << rejected.problems.front();
+  EXPECT_EQ(rejected.config.symmetry.stages, stages);
+}
+
+TEST(Parameters, ValuesBecomeYamlTextOfTheirType) {
+  XmlRpc::XmlRpcValue value = 0.1;
+  EXPECT_EQ(ss::parameterText(value), "0.10000000000000001");
+  value = 3;
+  EXPECT_EQ(ss::parameterText(value), "3");
+  value = true;
+  EXPECT_EQ(ss::parameterText(value), "true");
+  value = "a: b";  // a string stays one string
+  EXPECT_EQ(ss::parameterText(value), "\"a: b\"");
+  XmlRpc::XmlRpcValue list;
+  list[0] = "x";
+  list[1] = 2;
+  EXPECT_EQ(ss::parameterText(list), "[\"x\", 2]");
+  XmlRpc::XmlRpcValue nested;
+  nested[0][0] = 1;
+  EXPECT_THROW(ss::parameterText(nested), ss::InputError);
 }

@@ -202,22 +202,26 @@ TEST(SegmentService, SuccessWithLatestCloudAndCachedMap) {
 }
 
 TEST(SegmentService, LiveThresholdChangeTakesEffect) {
-  // dynamic_reconfigure: s_occl 1.0 keeps no segment (the score must exceed it); back to the
-  // configured value, objects return. Uses the latest cloud and map of the previous test.
+  // dynamic_reconfigure (the server of section symmetry.filter): s_occl 1.0 keeps no segment
+  // (the score must exceed it); back to the configured value, objects return. Uses the latest
+  // cloud and map of the previous test.
   auto set_s_occl = [](double value) {
     dynamic_reconfigure::Reconfigure reconfigure;
     dynamic_reconfigure::DoubleParameter parameter;
     parameter.name = "s_occl";
     parameter.value = value;
     reconfigure.request.config.doubles.push_back(parameter);
-    EXPECT_TRUE(ros::service::waitForService("segmentation/set_parameters", ros::Duration(10)));
-    EXPECT_TRUE(ros::service::call("segmentation/set_parameters", reconfigure));
+    EXPECT_TRUE(ros::service::waitForService("segmentation/symmetry/filter/set_parameters", ros::Duration(10)));
+    EXPECT_TRUE(ros::service::call("segmentation/symmetry/filter/set_parameters", reconfigure));
     for (const auto& applied : reconfigure.response.config.doubles) {
       if (applied.name == "s_occl") return applied.value;
     }
     return -1.0;
   };
   EXPECT_DOUBLE_EQ(set_s_occl(1.0), 1.0);
+  double stored = 0.0;
+  EXPECT_TRUE(ros::param::get("segmentation/symmetry/filter/s_occl", stored));
+  EXPECT_DOUBLE_EQ(stored, 1.0) << "the live name is the nested name";
   ss::SegmentCloud::Request request;
   request.timeout = 1.0;
   auto srv = call(request);

@@ -37,6 +37,7 @@ struct SceneInputs {
   std::optional<Eigen::Vector3f> sensor_origin;  ///< In the processing frame: ray-cast origin without a map,
                                                  ///< normal / table orientation always.
   std::optional<AxisAlignedBox> region_of_interest;  ///< In the processing frame.
+  std::optional<PlaneCoefficients> table_plane;      ///< In the processing frame, unit normal; none: the core estimates it.
   /// When there is no `occupancy` in the processing frame but a map in another one: returns
   /// that map moved into the processing frame over the given box (the cloud's usable points,
   /// processing frame, plus kMapMargin). Its InputErrors become INVALID_INPUT.

@@ -6,21 +6,27 @@
 #include <condition_variable>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
-#include <thread>
+#include <vector>
 
 #include <Eigen/Geometry>
+#include <boost/thread/recursive_mutex.hpp>
+#include <diagnostic_updater/diagnostic_updater.h>
 #include <dynamic_reconfigure/server.h>
-#include <nodelet/nodelet.h>
+#include <nodelet_topic_tools/nodelet_lazy.h>
+#include <pcl_msgs/ModelCoefficients.h>
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <sensor_msgs/PointCloud2.h>
 #include <tf2_ros/buffer.h>
-#include <tf2_ros/message_filter.h>
 #include <tf2_ros/transform_listener.h>
 
+#include "symmetry_segmentation/LiveInterfaceConfig.h"
 #include "symmetry_segmentation/SegmentCloud.h"
-#include "symmetry_segmentation/LiveParametersConfig.h"
+#include "symmetry_segmentation/ros/live_parameters.h"
+#include "symmetry_segmentation/ros/moved_map_cache.h"
+#include "symmetry_segmentation/ros/newest_item_worker.h"
 #include "symmetry_segmentation/ros/octomap_message.h"
 #include "symmetry_segmentation/ros/scene_assembly.h"
 #include "symmetry_segmentation/segmentation_config.h"
@@ -28,7 +34,7 @@
 
 namespace symmetry_segmentation {
 
-class SegmentationNodelet : public nodelet::Nodelet {
+class SegmentationNodelet : public nodelet_topic_tools::NodeletLazy {
  public:
   SegmentationNodelet() = default;
   ~SegmentationNodelet() override;
@@ -38,13 +44,12 @@ class SegmentationNodelet : public nodelet::Nodelet {
     std::shared_ptr<octomap::OcTree> tree;
     std::string frame;
   };
-  /// The cached map moved into a processing frame over a region (maps from another frame).
-  struct MovedMap {
-    std::shared_ptr<octomap::OcTree> source;
-    std::string frame;
-    Eigen::Isometry3d source_to_frame = Eigen::Isometry3d::Identity();
-    Eigen::AlignedBox3d region;
-    std::shared_ptr<octomap::OcTree> tree;
+  /// A table plane in its own frame (from ~table_plane, the parameter or the topic).
+  struct GivenPlane {
+    Eigen::Vector4d plane;  ///< Unit normal.
+    std::string frame;      ///< Empty: the processing frame.
+    ros::Time stamp;        ///< Zero: the cloud's stamp.
+    std::string source;     ///< "parameter" or "topic", for messages.
   };
   /// What one segmentation produced (or why it failed).
   struct Outcome {
@@ -53,55 +58,86 @@ class SegmentationNodelet : public nodelet::Nodelet {
     SegmentedObjectArray objects;
     Timings timings;
   };
+  /// For /diagnostics.
+  struct Statistics {
+    std::size_t segmented = 0;       ///< Clouds segmented from ~input or ~segment (SUCCESS).
+    std::size_t failed = 0;          ///< Segmentations that did not succeed.
+    std::size_t segmented_at_last_report = 0;
+    ros::WallTime last_report;
+    double last_duration_ms = 0.0;   ///< Of the last segmentation, successful or not.
+    uint8_t last_status = SegmentCloud::Response::SUCCESS;
+    std::string last_message;
+    bool any = false;
+  };
 
   void onInit() override;
-  void loadParameters();
+  /// NodeletLazy: an output got its first subscriber (or ~input is needed otherwise).
+  void subscribe() override;
+  /// NodeletLazy: the last output subscriber left; kept while ~input is still needed.
+  void unsubscribe() override;
+  /// ~input wanted: on_demand mode, an output subscriber, or a ~segment call waiting for a cloud.
+  bool inputWanted() const;
+  /// Subscribes or unsubscribes ~input as inputWanted() says (mode switch, waiting calls).
+  void refreshSubscription();
+
+  void loadInterfaceParameters();
+  void loadAlgorithmParameters();
+  void startLiveParameters();
+  /// Applies a live change of algorithm parameters as a whole; returns the values in force.
+  ConfigValues applyLiveChange(const ConfigValues& requested);
+  void reconfigureInterface(LiveInterfaceConfig& live, uint32_t level);
+
   void cloudCallback(const sensor_msgs::PointCloud2ConstPtr& cloud);
-  void transformedCloudCallback(const sensor_msgs::PointCloud2ConstPtr& cloud);
-  void transformFailureCallback(const sensor_msgs::PointCloud2ConstPtr& cloud,
-                                tf2_ros::filter_failure_reasons::FilterFailureReason reason);
   void octomapCallback(const OctomapMessage::ConstPtr& message);
+  void tablePlaneCallback(const pcl_msgs::ModelCoefficients::ConstPtr& message);
   bool segmentService(SegmentCloud::Request& request, SegmentCloud::Response& response);
-  void reconfigure(symmetry_segmentation::LiveParametersConfig& live, uint32_t level);
-  void workerLoop();
-  /// Subscribes ~input while it is needed (on_demand mode, an output subscriber, or a ~segment
-  /// call waiting for a cloud), unsubscribes otherwise.
-  void updateInputSubscription();
-  /// With ROS time moving backwards by more than 0.5 s (a bag restarted with --clock), transforms stamped in the
-  /// "future" would be used or block the filter: clears the tf buffer, the filter's queue and the pending cloud.
+  /// Continuous mode: segments a cloud taken from the worker.
+  void segmentFromTopic(sensor_msgs::PointCloud2ConstPtr& cloud);
+  /// With ROS time moving backwards by more than 0.5 s (a bag restarted with --clock),
+  /// transforms stamped in the "future" would be used: clears the tf buffer, the waiting cloud
+  /// and the moved map.
   void handleTimeJump();
-  /// The cached map moved into `frame` (by `map_to_frame`) over a region containing `box`.
-  std::shared_ptr<octomap::OcTree> movedMap(const std::shared_ptr<octomap::OcTree>& map, const std::string& frame,
-                                            const Eigen::Isometry3d& map_to_frame, const Eigen::AlignedBox3d& box);
+  /// The transform taking points of `source` into `target` at `stamp`, waiting up to `timeout`
+  /// (wall clock). Throws RequestError(TRANSFORM_FAILED) naming `what` and both frames.
+  Eigen::Isometry3d transform(const std::string& target, const std::string& source, const ros::Time& stamp,
+                              const ros::Duration& timeout, const std::string& what) const;
 
   /// Segments `cloud` and publishes the outputs on success; never throws.
   Outcome process(const sensor_msgs::PointCloud2& cloud, const ros::Duration& timeout,
                   const std::optional<AxisAlignedBox>& roi);
+  void record(const Outcome& outcome, double duration_ms);
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
   std::string processingFrame(const std::string& cloud_frame) const;
   bool continuous() const { return continuous_; }
   bool hasOutputSubscribers() const;
 
-  // Parameters (read in onInit; mode and the live-tuned values also by dynamic_reconfigure).
+  // Interface parameters (read in onInit; mode also by dynamic_reconfigure).
   std::atomic<bool> continuous_{true};
+  bool lazy_parameter_ = true;  // ~lazy (NodeletLazy): false keeps ~input subscribed in continuous mode
   std::string method_;
   std::string fixed_frame_;
   std::string sensor_frame_;
   double transform_timeout_ = 0.1;
   int max_input_points_ = 3000000;
+  int service_threads_ = 2;
+  std::optional<GivenPlane> plane_parameter_;
+
+  // Algorithm parameters in force, replaced as a whole.
   std::mutex config_mutex_;
   SegmentationConfig config_;
 
-  // The mutex is declared first so it outlives the server (members die in reverse order).
+  // The mutex is declared first so it outlives the servers (members die in reverse order).
   boost::recursive_mutex reconfigure_mutex_;  // dynamic_reconfigure::Server takes a boost mutex
-  std::unique_ptr<dynamic_reconfigure::Server<symmetry_segmentation::LiveParametersConfig>> reconfigure_server_;
+  std::unique_ptr<dynamic_reconfigure::Server<LiveInterfaceConfig>> interface_server_;
+  std::vector<std::unique_ptr<LiveSection>> live_sections_;
 
   std::unique_ptr<tf2_ros::Buffer> tf_buffer_;
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
-  std::unique_ptr<tf2_ros::MessageFilter<sensor_msgs::PointCloud2>> tf_filter_;
-  std::mutex subscription_mutex_;  // cloud_subscriber_ and latest_waiters_
+  // ~input: guarded by NodeletLazy's connection_mutex_.
   ros::Subscriber cloud_subscriber_;
-  int latest_waiters_ = 0;  // ~segment calls waiting for a cloud on ~input
+  std::atomic<int> latest_waiters_{0};  // ~segment calls waiting for a cloud on ~input
   ros::Subscriber octomap_subscriber_;
+  ros::Subscriber plane_subscriber_;
   ros::Publisher objects_publisher_;
   ros::Publisher labelled_publisher_;
   ros::Publisher markers_publisher_;
@@ -110,25 +146,25 @@ class SegmentationNodelet : public nodelet::Nodelet {
   ros::CallbackQueue service_queue_;
   ros::ServiceServer service_;
   std::unique_ptr<ros::AsyncSpinner> service_spinner_;
-  int service_threads_ = 2;
 
   // Inputs cached for the service and the frame logic.
   mutable std::mutex inputs_mutex_;
   std::condition_variable cloud_arrived_;
   sensor_msgs::PointCloud2ConstPtr latest_cloud_;
   CachedMap map_;
-  std::mutex moved_map_mutex_;
-  MovedMap moved_map_;
+  std::optional<GivenPlane> plane_topic_;
   std::mutex time_mutex_;
   ros::Time last_time_;
+  std::atomic<bool> stopping_{false};
 
+  std::unique_ptr<MovedMapCache> moved_maps_;
   // Continuous mode: one pending cloud at most (newer replaces older), one worker thread.
-  std::mutex queue_mutex_;
-  std::condition_variable queue_changed_;
-  sensor_msgs::PointCloud2ConstPtr pending_cloud_;
-  std::atomic<bool> stopping_{false};  // also read by the service under inputs_mutex_
-  std::thread worker_;
-  std::atomic<std::size_t> dropped_clouds_{0};
+  std::unique_ptr<NewestItemWorker<sensor_msgs::PointCloud2ConstPtr>> worker_;
+
+  std::mutex statistics_mutex_;
+  Statistics statistics_;
+  std::unique_ptr<diagnostic_updater::Updater> diagnostics_;
+  ros::WallTimer diagnostics_timer_;
 };
 
 }  // namespace symmetry_segmentation
