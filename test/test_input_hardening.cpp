@@ -206,6 +206,22 @@ TEST(InputHardening, PlyVertexListsAreRejected) {
   EXPECT_EQ(loadCloud(dir + "/faces.ply").cloud->size(), 3u);
 }
 
+// Found by fuzzing (test/fuzz/corpus/ply_file/crash_indented_obj_info.ply): PCL hands an obj_info
+// line to a callback that asserts the line starts with "obj_info"; a form feed (or a space)
+// before it aborted the process.
+TEST(InputHardening, IndentedPlyHeaderLinesAreRejected) {
+  const std::string dir = test_support::makeTempDir("hardening_ply_indented");
+  for (const char* indent : {"\f", " ", "\t"}) {
+    writeTextFile(dir + "/indented.ply", plyHeader("ascii", "1", std::string(indent) + "obj_info scanner\n") + "0 0 1\n");
+    expectCloudError(dir + "/indented.ply", "starts with white space");
+  }
+  writeTextFile(dir + "/found.ply",
+                test_support::readTextFile(std::string(SOURCE_DIR) + "/test/fuzz/corpus/ply_file/crash_indented_obj_info.ply"));
+  expectCloudError(dir + "/found.ply", "starts with white space");
+  writeTextFile(dir + "/plain.ply", plyHeader("ascii", "1", "obj_info scanner\ncomment  two  spaces\n") + "0 0 1\n");
+  EXPECT_EQ(loadCloud(dir + "/plain.ply").cloud->size(), 1u);
+}
+
 // Found by fuzzing (test/fuzz/corpus/ply_file/crash_lone_blue.ply): PCL packs 8-bit colours
 // into one rgb field that only "red" creates; a vertex with "blue" but no "red" made Debian's PCL
 // abort on an assertion (the whole process, not just the load).

@@ -429,6 +429,12 @@ PlyHeader parsePlyHeader(const std::string& path, const HeaderText& text) {
   for (std::size_t i = 1; i < text.lines.size(); ++i) {
     const Words words = splitWords(text.lines[i]);
     if (words.empty()) continue;
+    // PCL finds a line's keyword past leading white space but hands obj_info lines to a callback
+    // that splits at spaces and asserts the first piece is "obj_info": a form feed or a space
+    // before it aborted the process (found by fuzzing). No writer indents PLY headers.
+    if (std::isspace(static_cast<unsigned char>(text.lines[i][0]))) {
+      throw InputError(path, "PLY header: line " + std::to_string(i + 1) + " starts with white space");
+    }
     const std::string& key = words[0];
     if (key == "comment" || key == "obj_info" || key == "end_header") continue;
     if (key == "format") {
