@@ -2,6 +2,7 @@
 // A tabletop scene as the core library sees it: a cloud (input order preserved), optional
 // occupancy, supporting plane, sensor origins and ground-truth labels.
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -35,6 +36,9 @@ struct Scene {
   std::shared_ptr<octomap::OcTree> occupancy;  ///< May be null: no map on disk.
   std::optional<PlaneCoefficients> table_plane;
   std::vector<int> labels;  ///< Ground truth per cloud point (0 = not an object); empty if none.
+  /// The cloud file's own per-point "label" field as stored (e.g. the ground truth of OSD / mOSD
+  /// frames, see evaluation/ground_truth.h); empty when the file has none.
+  std::vector<std::uint32_t> file_labels;
 
   std::size_t size() const { return cloud ? cloud->size() : 0; }
   bool hasLabels() const { return !labels.empty(); }

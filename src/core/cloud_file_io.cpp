@@ -117,6 +117,12 @@ void loadCloudFile(const std::string& path, Scene& scene) {
   pcl::fromPCLPointCloud2(raw, *cloud);
   scene.has_normals = hasField(raw, "normal_x") && hasField(raw, "normal_y") && hasField(raw, "normal_z");
   scene.has_color = hasField(raw, "rgb") || hasField(raw, "rgba");
+  if (hasField(raw, "label")) {
+    pcl::PointCloud<pcl::Label> labels;
+    pcl::fromPCLPointCloud2(raw, labels);
+    scene.file_labels.reserve(labels.size());
+    for (const pcl::Label& point : labels) scene.file_labels.push_back(point.label);
+  }
 
   if (std::none_of(cloud->points.begin(), cloud->points.end(), isUsablePoint)) {
     throw InputError(path, "cloud has no finite points within 100 km (all NaN, infinite or farther)");

@@ -13,7 +13,7 @@ SceneOverlap computeOverlap(const std::vector<int>& labels,
                             const std::vector<std::vector<int>>& segments) {
   std::map<int, std::size_t> object_sizes;  // ordered: object_labels come out ascending
   for (int label : labels) {
-    if (label != 0) ++object_sizes[label];
+    if (label > 0) ++object_sizes[label];
   }
 
   SceneOverlap overlap;
@@ -32,6 +32,7 @@ SceneOverlap computeOverlap(const std::vector<int>& labels,
     indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
 
     std::unordered_map<int, std::size_t> intersection;
+    std::size_t ignored = 0;
     for (int index : indices) {
       if (index < 0 || static_cast<std::size_t>(index) >= labels.size()) {
         throw InputError("segment " + std::to_string(s) + " has point index " +
@@ -39,13 +40,15 @@ SceneOverlap computeOverlap(const std::vector<int>& labels,
                          std::to_string(labels.size()) + " points");
       }
       const int label = labels[static_cast<std::size_t>(index)];
-      if (label != 0) ++intersection[label];
+      if (label > 0) ++intersection[label];
+      if (label < 0) ++ignored;
     }
+    const std::size_t segment_size = indices.size() - ignored;
 
     double segment_best = 0.0;
     for (const auto& [label, shared] : intersection) {
       const double union_size =
-          static_cast<double>(indices.size() + object_sizes[label] - shared);
+          static_cast<double>(segment_size + object_sizes[label] - shared);
       const double iou = static_cast<double>(shared) / union_size;
       segment_best = std::max(segment_best, iou);
       double& object_best = overlap.object_best_iou[object_position[label]];

@@ -17,6 +17,7 @@
 #include "symmetry_segmentation/evaluation/evaluation_inputs.h"
 #include "symmetry_segmentation/evaluation/evaluation_summary.h"
 #include "symmetry_segmentation/evaluation/evaluation_table.h"
+#include "symmetry_segmentation/evaluation/ground_truth.h"
 #include "symmetry_segmentation/evaluation/parameter_sweep.h"
 #include "symmetry_segmentation/evaluation/plot_script.h"
 #include "symmetry_segmentation/scene_io.h"
@@ -42,7 +43,10 @@ scenes. Reported at sigma 0.5, 0.75 and 0.9, per scene kind (scene_info.yaml; "u
 absent) and overall, with the mean best IoU per object.
 
 Each <scene_dir> is a scene directory holding labels.txt, or a directory whose subdirectories
-holding labels.txt are scenes.
+holding labels.txt are scenes. Real frames of OSD / mOSD (Richtsfeld et al.) are read as
+distributed: a .pcd file with a "label" field (0 invalid, 1-9 table, object = label / 10 for
+labels >= 20), or a directory of them; their kind is the OSD category of the frame's name
+(learnN / testN: boxes, stacked, occluded, cylindric, mixed, complex).
 
 Options:
   --method M            Run method M on every scene (repeatable; default: all methods: )";
@@ -62,6 +66,11 @@ Options:
                         marked (needs /usr/bin/python3 with matplotlib).
   --sigma S             IoU threshold of the plot and of each method's best sweep value
                         (default 0.9).
+  --osd-parts           OSD frames at part level: each visible piece of an occluded object
+                        (labels 21, 22, ...) is an object of its own (default: object level).
+  --table-band M        Leave points within M metres of the table out of objects and segments
+                        alike (e.g. 0.015): the plane fitted to an OSD frame's table-labelled
+                        points, else the scene's table_plane.txt (default 0: off).
   --ablate              Run the symmetry method with its full stage list (symmetry.stages of
                         --config) and once without each stage the list can run without; print
                         per data set (each <scene_dir> argument is one; it may also be a scene
@@ -90,6 +99,7 @@ struct Options {
   std::string plot_path;
   std::string plot_script;
   double sigma = 0.9;
+  ss::GroundTruthOptions ground_truth;
   bool help = false;
   bool ablate = false;
 };
@@ -104,6 +114,16 @@ double parseSigma(const std::string& text) {
   throw ss::InputError("--sigma", "expected a number in [0, 1), got '" + text + "'");
 }
 
+double parseTableBand(const std::string& text) {
+  try {
+    std::size_t used = 0;
+    const double band = std::stod(text, &used);
+    if (used == text.size() && band >= 0.0 && band <= 0.5) return band;
+  } catch (const std::exception&) {
+  }
+  throw ss::InputError("--table-band", "expected metres in [0, 0.5], got '" + text + "'");
+}
+
 Options parseArguments(int argc, char** argv) {
   Options options;
   for (int i = 1; i < argc; ++i) {
@@ -114,6 +134,10 @@ Options parseArguments(int argc, char** argv) {
     }
     if (argument == "--ablate") {
       options.ablate = true;
+      continue;
+    }
+    if (argument == "--osd-parts") {
+      options.ground_truth.osd_parts = true;
       continue;
     }
     if (argument.rfind("--", 0) != 0) {
@@ -142,6 +166,7 @@ Options parseArguments(int argc, char** argv) {
     else if (argument == "--plot") options.plot_path = takeValue();
     else if (argument == "--plot-script") options.plot_script = takeValue();
     else if (argument == "--sigma") options.sigma = parseSigma(takeValue());
+    else if (argument == "--table-band") options.ground_truth.table_band = parseTableBand(takeValue());
     else throw ss::InputError(argument, "unknown option (see --help)");
   }
   return options;
@@ -313,7 +338,7 @@ int runAblation(const Options& options) {
     ablation.variants = variants;
     ablation.totals.resize(variants.size());
     for (const std::string& scene_dir : data_sets[d]) {
-      const ss::Scene scene = ss::loadScene(scene_dir);
+      const ss::Scene scene = ss::loadLabelledScene(scene_dir, options.ground_truth);
       ++ablation.scenes;
       ablation.labelled = ablation.labelled && scene.hasLabels();
       for (std::size_t v = 0; v < variants.size(); ++v) {
@@ -360,8 +385,9 @@ int run(int argc, char** argv) {
   // Scene by scene, so only one scene is in memory at a time.
   std::vector<ss::SceneEvaluation> evaluations;
   for (const std::string& scene_dir : scene_dirs) {
-    const ss::Scene scene = ss::loadScene(scene_dir);
-    if (!scene.hasLabels()) throw ss::InputError(scene_dir, "no ground-truth labels (labels.txt)");
+    const ss::Scene scene = ss::loadLabelledScene(scene_dir, options.ground_truth);
+    if (!scene.hasLabels())
+      throw ss::InputError(scene_dir, "no ground-truth labels (labels.txt, or a label field in the cloud)");
     for (const Run& run : runs) {
       evaluations.push_back(evaluateRun(run, scene, scene_dir));
       const ss::SceneEvaluation& done = evaluations.back();

@@ -3,8 +3,10 @@
 // some segment overlaps it with IoU > sigma; a segment is correct when its best IoU with an object
 // of its scene is > sigma. Counts are pooled over scenes (summed, then divided).
 //
-// Ground-truth objects are the distinct non-zero labels of a scene; IoU is computed over input
-// point indices, so points labelled 0 inside a segment lower its IoU. Segments may overlap.
+// Ground-truth objects are the distinct positive labels of a scene; IoU is computed over input
+// point indices, so points labelled 0 inside a segment lower its IoU. Points with a negative label
+// (kIgnoredLabel) are left out: in no object, and taken out of every segment before its IoU (a
+// segment of nothing else still counts, with IoU 0). Segments may overlap.
 
 #include <cstddef>
 #include <vector>
@@ -13,9 +15,12 @@
 
 namespace symmetry_segmentation {
 
+/// A point left out of the evaluation (any negative label does the same).
+constexpr int kIgnoredLabel = -1;
+
 /// Best IoUs of one scene; independent of sigma, so one overlap serves every threshold.
 struct SceneOverlap {
-  std::vector<int> object_labels;         ///< Distinct non-zero labels, ascending.
+  std::vector<int> object_labels;         ///< Distinct positive labels, ascending.
   std::vector<double> object_best_iou;    ///< Per object: best IoU over all segments.
   std::vector<double> segment_best_iou;   ///< Per segment: best IoU over all objects.
 };
