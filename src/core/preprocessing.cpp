@@ -108,7 +108,8 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
 
   if (params.remove_table) {
     PlaneCoefficients plane;
-    const auto coarse = voxelDownsample(input, finite, std::max(params.voxel_size, 0.015f), false).cloud;
+    // With the cloud's normals (fused clouds), which way each surface faces helps tell the table.
+    const auto coarse = voxelDownsample(input, finite, std::max(params.voxel_size, 0.015f), scene.has_normals).cloud;
     bool found = false;
     if (scene.table_plane) {
       plane = *scene.table_plane;

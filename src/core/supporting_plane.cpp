@@ -5,6 +5,11 @@
 // hold more points. So up to three large planes are extracted in turn and the one the objects
 // stand on wins: the most points (not on any of the planes) within an object's height in front
 // of it and over its extent. A wall has few such points, the floor only the table's legs.
+//
+// In a fused scene cropped to the tabletop the table may be only a rim around the objects, far
+// smaller than their faces (kinfu_tabletop: 5 % of the points). Whatever the table's size, the
+// whole scene lies on one side of it: it is a face of the scene's convex hull. So the hull faces
+// holding the most points are candidates too.
 #include <pcl/ModelCoefficients.h>
 #include <pcl/PointIndices.h>
 #include <pcl/filters/extract_indices.h>
@@ -12,15 +17,25 @@
 #include <pcl/sample_consensus/method_types.h>
 #include <pcl/sample_consensus/model_types.h>
 #include <pcl/segmentation/sac_segmentation.h>
+#include <pcl/surface/convex_hull.h>
 
 #include "symmetry_segmentation/preprocessing.h"
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 
 namespace symmetry_segmentation {
 namespace {
 
 constexpr int kMaxCandidatePlanes = 3;
+constexpr int kMaxHullCandidates = 3;
+// Points seen under a candidate's own points that still let it be the support (noise, legs).
+constexpr std::size_t kMaxPointsUnderSupport = 20;
+constexpr std::size_t kMinNormalsToJudge = 10;
+// Hull faces closer than this in angle (cos) and offset are one candidate.
+constexpr float kSamePlaneCos = 0.99f;
+constexpr float kSamePlaneOffset = 0.02f;
 constexpr float kMaxObjectHeight = 0.3f;   // Objects on a table are lower than this (m).
 constexpr float kFootprintDistance = 0.03f;  // An object stands over the plane's points (m).
 // Far from the sensor a plane's noise exceeds the RANSAC threshold; those points are still the
@@ -60,11 +75,75 @@ bool largestPlane(const Cloud::Ptr& cloud, const PreprocessParams& params, std::
   return true;
 }
 
+bool samePlane(const PlaneCoefficients& a, const PlaneCoefficients& b) {
+  const float cos = a.head<3>().dot(b.head<3>());
+  return std::fabs(cos) > kSamePlaneCos && std::fabs(cos > 0.0f ? a[3] - b[3] : a[3] + b[3]) < kSamePlaneOffset;
+}
+
+/// The faces of the convex hull of `cloud` holding the most points within ransac_distance (at
+/// least `min_inliers`), each re-fitted to its points, as candidates; none when the hull fails
+/// (a flat or degenerate cloud).
+std::vector<CandidatePlane> hullFacePlanes(const Cloud::Ptr& cloud, const PreprocessParams& params, std::size_t min_inliers) {
+  std::vector<CandidatePlane> result;
+  if (cloud->size() < 4) return result;
+  pcl::ConvexHull<PointT> hull;
+  hull.setDimension(3);
+  hull.setInputCloud(cloud);
+  Cloud hull_points;
+  std::vector<pcl::Vertices> faces;
+  hull.reconstruct(hull_points, faces);
+  if (hull.getDimension() != 3) return result;
+
+  struct Face {
+    std::size_t inliers;
+    PlaneCoefficients plane;
+  };
+  std::vector<Face> scored;
+  for (const pcl::Vertices& face : faces) {
+    if (face.vertices.size() < 3) continue;
+    const Eigen::Vector3f a = hull_points[face.vertices[0]].getVector3fMap();
+    const Eigen::Vector3f b = hull_points[face.vertices[1]].getVector3fMap();
+    const Eigen::Vector3f c = hull_points[face.vertices[2]].getVector3fMap();
+    Eigen::Vector3f normal = (b - a).cross(c - a);
+    if (!(normal.norm() > 1e-9f)) continue;
+    normal.normalize();
+    const PlaneCoefficients plane(normal.x(), normal.y(), normal.z(), -normal.dot(a));
+    std::size_t inliers = 0;
+    for (const auto& p : cloud->points) inliers += std::fabs(distanceTo(plane, p)) <= params.ransac_distance;
+    if (inliers >= min_inliers) scored.push_back({inliers, plane});
+  }
+  std::sort(scored.begin(), scored.end(), [](const Face& x, const Face& y) { return x.inliers > y.inliers; });
+
+  std::vector<PlaneCoefficients> taken;
+  for (const Face& face : scored) {
+    if (static_cast<int>(result.size()) >= kMaxHullCandidates) break;
+    if (std::any_of(taken.begin(), taken.end(), [&](const PlaneCoefficients& t) { return samePlane(t, face.plane); })) continue;
+    taken.push_back(face.plane);
+    // A hull face rests on a few extreme points; the plane through all of its points is the table.
+    auto near = std::make_shared<Cloud>();
+    for (const auto& p : cloud->points) {
+      if (std::fabs(distanceTo(face.plane, p)) <= 2.0f * params.ransac_distance) near->push_back(p);
+    }
+    CandidatePlane candidate;
+    pcl::PointIndices inliers;
+    if (largestPlane(near, params, min_inliers, candidate, inliers)) result.push_back(candidate);
+  }
+  return result;
+}
+
+/// How a candidate relates to the rest of the scene.
+struct Support {
+  std::size_t standing = 0;  ///< Points resting on it (see below).
+  std::size_t under = 0;     ///< Points below it, under its own points.
+  bool faces_down = false;   ///< Its points' normals (where known) point away from "up".
+};
+
 /// Points resting on the plane: on no candidate plane, on the sensor's side within an object's
-/// height, and over the plane's own points. (The sensor sees the table from above.)
-std::size_t pointsStandingOn(const CandidatePlane& candidate, const std::vector<CandidatePlane>& all,
-                             const Cloud& cloud, const std::optional<Eigen::Vector3f>& viewpoint,
-                             float on_plane_distance) {
+/// height, and over the plane's own points. (The sensor sees the table from above.) And points
+/// under the plane's own points on the other side: nothing is seen through or under a table
+/// top, while a plane through an object's face has the rest of the scene on both sides.
+Support supportOf(const CandidatePlane& candidate, const std::vector<CandidatePlane>& all, const Cloud& cloud,
+                  const std::optional<Eigen::Vector3f>& viewpoint, float on_plane_distance) {
   std::vector<const PointT*> off_planes;
   float majority = 0.0f;
   for (const auto& p : cloud.points) {
@@ -82,17 +161,32 @@ std::size_t pointsStandingOn(const CandidatePlane& candidate, const std::vector<
   footprint.setInputCloud(candidate.inliers);
   std::vector<int> index(1);
   std::vector<float> squared(1);
-  std::size_t standing = 0;
+  auto overPlanePoints = [&](const PointT& p, float height) {
+    PointT foot = p;
+    foot.getVector3fMap() -= height * up.head<3>();
+    return footprint.nearestKSearch(foot, 1, index, squared) == 1 && squared[0] < kFootprintDistance * kFootprintDistance;
+  };
+  Support support;
   for (const PointT* p : off_planes) {
     const float height = distanceTo(up, *p);
     if (height <= 0.0f || height > kMaxObjectHeight) continue;
-    PointT foot = *p;
-    foot.getVector3fMap() -= height * up.head<3>();
-    if (footprint.nearestKSearch(foot, 1, index, squared) == 1 && squared[0] < kFootprintDistance * kFootprintDistance) {
-      ++standing;
-    }
+    if (overPlanePoints(*p, height)) ++support.standing;
   }
-  return standing;
+  for (const auto& p : cloud.points) {
+    const float height = distanceTo(up, p);
+    if (height < -on_plane_distance && overPlanePoints(p, height)) ++support.under;
+  }
+  // A fused cloud's normals point out of the surfaces: a table's point up, toward what stands
+  // on it; the far face of a box, seen from another side, points away.
+  float agreement = 0.0f;
+  std::size_t with_normals = 0;
+  for (const auto& p : candidate.inliers->points) {
+    if (!std::isfinite(p.normal_x) || !std::isfinite(p.normal_y) || !std::isfinite(p.normal_z)) continue;
+    agreement += up.head<3>().dot(p.getNormalVector3fMap());
+    ++with_normals;
+  }
+  support.faces_down = with_normals >= kMinNormalsToJudge && agreement < 0.0f;
+  return support;
 }
 
 }  // namespace
@@ -117,13 +211,33 @@ bool estimateSupportingPlane(const Cloud& cloud, const PreprocessParams& params,
     extract.filter(*rest);
     remaining = rest;
   }
+  for (CandidatePlane& hull_candidate : hullFacePlanes(cloud.makeShared(), params, 50)) {
+    const bool known = std::any_of(candidates.begin(), candidates.end(),
+                                   [&](const CandidatePlane& c) { return samePlane(c.plane, hull_candidate.plane); });
+    if (!known) candidates.push_back(std::move(hull_candidate));
+  }
   if (candidates.empty()) return false;
+  // A support has (almost) nothing under its own points and faces up; if no candidate
+  // qualifies, all compete.
+  std::vector<Support> supports;
+  for (const CandidatePlane& candidate : candidates) {
+    supports.push_back(supportOf(candidate, candidates, cloud, viewpoint, kOnPlaneFactor * params.ransac_distance));
+  }
+  auto supportsThings = [&](std::size_t k) {
+    return !supports[k].faces_down &&
+           supports[k].under <= std::max<std::size_t>(kMaxPointsUnderSupport, candidates[k].inliers->size() / 20);
+  };
+  bool any_support = false;
+  for (std::size_t k = 0; k < candidates.size(); ++k) any_support = any_support || supportsThings(k);
   std::size_t best = 0, best_standing = 0;
-  for (std::size_t k = 0; k < candidates.size() && candidates.size() > 1; ++k) {
-    const std::size_t standing = pointsStandingOn(candidates[k], candidates, cloud, viewpoint, kOnPlaneFactor * params.ransac_distance);
-    if (standing > best_standing) {  // Ties keep the larger (earlier) plane.
-      best_standing = standing;
+  bool have_best = false;
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    if (any_support && !supportsThings(k)) continue;
+    // Ties keep the larger (earlier) plane.
+    if (!have_best || supports[k].standing > best_standing) {
       best = k;
+      best_standing = supports[k].standing;
+      have_best = true;
     }
   }
   plane = candidates[best].plane;
