@@ -124,6 +124,8 @@ TEST(SegmentsJson, RoundTripKeepsEverything) {
   with_plane.scores = ss::SegmentScores{0.98f, 0.01f};
   result.segments = {plain, with_plane};
   result.timing_ms = {{"preprocess", 12.5}, {"total", 40.0}};
+  result.support = ss::SupportSurface{Eigen::Vector4f(0, 0, 1, -0.7f),
+                                      {{0.f, 0.f, 0.7f}, {1.f, 0.f, 0.7f}, {0.5f, 1.f, 0.7f}}};
   const std::string dir = test_support::makeTempDir("segments_json");
   ss::writeSegmentsJson(result, dir + "/s.json");
   const auto loaded = ss::readSegmentsJson(dir + "/s.json");
@@ -136,12 +138,19 @@ TEST(SegmentsJson, RoundTripKeepsEverything) {
   EXPECT_FLOAT_EQ(loaded.segments[1].scores->occlusion, 0.98f);
   ASSERT_EQ(loaded.timing_ms.size(), 2u);
   EXPECT_EQ(loaded.timing_ms[1].first, "total");
+  ASSERT_TRUE(loaded.support.has_value());
+  EXPECT_FLOAT_EQ(loaded.support->plane[3], -0.7f);
+  ASSERT_EQ(loaded.support->polygon.size(), 3u);
+  EXPECT_FLOAT_EQ(loaded.support->polygon[2].y(), 1.0f);
 }
 
 TEST(SegmentsJson, MalformedFilesAreErrors) {
   const std::string dir = test_support::makeTempDir("segments_json_bad");
   for (const char* bad : {"{", "{\"segments\": []}", "{\"input_points\": 3, \"segments\": [{\"indices\": [5]}]}",
-                          "{\"input_points\": 3, \"segments\": [{\"indices\": \"x\"}]}"}) {
+                          "{\"input_points\": 3, \"segments\": [{\"indices\": \"x\"}]}",
+                          "{\"input_points\": 3, \"support\": {\"plane\": [0, 0, 1]}, \"segments\": []}",
+                          "{\"input_points\": 3, \"support\": {\"plane\": [0, 0, 0, 1], \"polygon\": []}, \"segments\": []}",
+                          "{\"input_points\": 3, \"support\": {\"plane\": [0, 0, 1, 0], \"polygon\": [[1, 2]]}, \"segments\": []}"}) {
     test_support::writeTextFile(dir + "/bad.json", bad);
     EXPECT_THROW(ss::readSegmentsJson(dir + "/bad.json"), ss::InputError) << bad;
   }

@@ -207,3 +207,82 @@ TEST(Preprocessing, FindsATableRimSmallerThanTheObjectsFaces) {
   EXPECT_LT(coarse_table * 10, coarse->size()) << table_points << " table points";
   EXPECT_GT(coarse_side, coarse_table);
 }
+
+TEST(SupportPolygon, IsTheTablesOwnPointsGrownByTheMargin) {
+  ss::Cloud cloud;
+  test_clouds::addTable(cloud, 0.4f, 0.01f);
+  // A coplanar patch 1 m away (a second table, a window sill): not the same support.
+  ss::Cloud far_patch;
+  test_clouds::addTable(far_patch, 0.1f, 0.01f);
+  for (auto& p : far_patch.points) p.x += 1.5f;
+  cloud += far_patch;
+  const auto polygon = ss::SupportPolygon::fromPlanePoints(cloud, ss::PlaneCoefficients(0, 0, 1, 0), 0.01f, 0.045f, 0.05f);
+  ASSERT_TRUE(polygon.has_value());
+  EXPECT_TRUE(polygon->contains({0.0f, 0.0f, 0.3f})) << "over the table, at any height";
+  EXPECT_TRUE(polygon->contains({0.44f, -0.39f, 0.1f})) << "within the margin";
+  EXPECT_FALSE(polygon->contains({0.46f, 0.0f, 0.1f})) << "beyond the margin";
+  EXPECT_FALSE(polygon->contains({1.5f, 0.0f, 0.0f})) << "the coplanar patch apart";
+  const auto corners = polygon->corners();
+  ASSERT_GE(corners.size(), 4u);
+  for (const auto& corner : corners) {
+    EXPECT_NEAR(corner.z(), 0.0f, 1e-5f);
+    EXPECT_LE(corner.head<2>().cwiseAbs().maxCoeff(), 0.45f + 1e-4f);
+  }
+  // A line of points spans no area: no polygon (and no crash).
+  ss::Cloud line;
+  for (float x = 0.0f; x < 0.5f; x += 0.01f) {
+    ss::PointT p;
+    p.x = x; p.y = 0.0f; p.z = 0.0f;
+    line.push_back(p);
+  }
+  EXPECT_FALSE(ss::SupportPolygon::fromPlanePoints(line, ss::PlaneCoefficients(0, 0, 1, 0), 0.01f, 0.045f, 0.05f));
+}
+
+TEST(Preprocessing, KeepsOnlyWhatStandsOverTheTable) {
+  // A single view: a table in front of a wall, the floor below, a lamp's shade hanging high
+  // over the table and a box on it. Only the box goes on.
+  ss::Scene scene;
+  scene.cloud = std::make_shared<ss::Cloud>();
+  test_clouds::addTable(*scene.cloud, 0.4f, 0.01f);
+  auto add = [&](float x, float y, float z) {
+    ss::PointT p;
+    p.x = x; p.y = y; p.z = z;
+    p.normal_x = p.normal_y = p.normal_z = NAN;
+    scene.cloud->push_back(p);
+  };
+  for (float x = -1.0f; x <= 1.0f; x += 0.01f) {
+    for (float z = -0.7f; z <= 0.8f; z += 0.01f) add(x, 0.7f, z);  // the wall, 30 cm behind the table
+    for (float y = -1.0f; y <= 0.7f; y += 0.02f) {
+      if (std::fabs(x) > 0.45f || std::fabs(y) > 0.45f) add(x, y, -0.7f);  // the floor, where the table hides none
+    }
+  }
+  for (float x = -0.1f; x <= 0.1f; x += 0.01f) {
+    for (float y = -0.1f; y <= 0.1f; y += 0.01f) add(x, y, 0.7f);  // the shade
+  }
+  const std::size_t before_box = scene.cloud->size();
+  test_clouds::addBox(*scene.cloud, {-0.2f, -0.1f, 0.0f}, {0.1f, 0.08f, 0.12f}, 0.005f);
+  for (auto& p : scene.cloud->points) p.normal_x = p.normal_y = p.normal_z = NAN;
+  scene.sensor_origins.push_back({0.0f, -0.9f, 0.7f});
+
+  ss::PreprocessParams params;
+  const auto prepared = ss::preprocess(scene, params);
+  ASSERT_TRUE(prepared.has_table);
+  EXPECT_NEAR(prepared.table_plane[2], 1.0f, 0.01f);
+  ASSERT_TRUE(prepared.support_polygon.has_value());
+  std::size_t box_points = 0;
+  for (int i : prepared.kept_input_indices) {
+    EXPECT_GE(static_cast<std::size_t>(i), before_box) << "not the box: " << scene.cloud->points[i];
+    box_points += static_cast<std::size_t>(i) >= before_box;
+  }
+  EXPECT_GT(box_points, (scene.cloud->size() - before_box) * 8 / 10) << "the box, all but its bottom";
+  const auto support = ss::supportSurface(prepared);
+  ASSERT_TRUE(support.has_value());
+  EXPECT_GE(support->polygon.size(), 4u);
+
+  // Switched off, the wall over the table's height is segmented again.
+  params.crop_to_support = false;
+  params.max_object_height = 0.0f;
+  const auto uncropped = ss::preprocess(scene, params);
+  EXPECT_GT(uncropped.kept_input_indices.size(), prepared.kept_input_indices.size() + 10000);
+  EXPECT_FALSE(uncropped.support_polygon.has_value());
+}

@@ -1,7 +1,7 @@
 #pragma once
 // Scene preprocessing shared by every method: supporting plane (from the scene or RANSAC),
 // removal of points on or below it, voxel-grid downsampling with a map back to the input
-// points, and normals (a file's own normals are kept as given, averaged per voxel; missing
+// points, the table's extent (only points over it go on), and normals (a file's own normals are kept as given, averaged per voxel; missing
 // ones are estimated and oriented toward the sensor).
 
 #include <optional>
@@ -9,6 +9,8 @@
 
 #include "symmetry_segmentation/parameter_schema.h"
 #include "symmetry_segmentation/scene.h"
+#include "symmetry_segmentation/segmentation_result.h"
+#include "symmetry_segmentation/support_polygon.h"
 
 namespace symmetry_segmentation {
 
@@ -21,6 +23,9 @@ struct PreprocessParams {
   int ransac_iterations = 500;
   float normal_radius = 0.03f;
   float max_range = 0.0f;
+  bool crop_to_support = true;
+  float support_margin = 0.05f;
+  float max_object_height = 0.5f;
 };
 
 inline void describeParameters(ParameterList<PreprocessParams>& list) {
@@ -34,7 +39,13 @@ inline void describeParameters(ParameterList<PreprocessParams>& list) {
       .add("ransac_distance", &P::ransac_distance, 0.001, 0.1, "m", "RANSAC inlier distance when the plane is estimated")
       .add("ransac_iterations", &P::ransac_iterations, 1, 1000000, "", "RANSAC iterations when the plane is estimated")
       .add("normal_radius", &P::normal_radius, 0.005, 0.5, "m", "radius for normal estimation when the cloud has none")
-      .add("max_range", &P::max_range, 0.0, 100.0, "m", "drop points farther than this from the sensor; 0 keeps all");
+      .add("max_range", &P::max_range, 0.0, 100.0, "m", "drop points farther than this from the sensor; 0 keeps all")
+      .add("crop_to_support", &P::crop_to_support,
+           "keep only points over the table's extent (the polygon of its points): walls, floor, background go")
+      .add("support_margin", &P::support_margin, 0.0, 1.0, "m",
+           "the table's polygon grows by this, for objects at its edge whose footprint hides the table there")
+      .add("max_object_height", &P::max_object_height, 0.0, 10.0, "m",
+           "points higher than this above the table are not on a tabletop object; 0: no limit");
 }
 
 struct PreprocessedScene {
@@ -45,6 +56,7 @@ struct PreprocessedScene {
   bool has_table = false;
   float table_margin = 0.0f;               ///< The margin actually used (m).
   PlaneCoefficients table_plane = PlaneCoefficients::Zero();  ///< Normal points away from the table top.
+  std::optional<SupportPolygon> support_polygon;  ///< The table's extent, when cropped to it.
   Eigen::Vector3f viewpoint = Eigen::Vector3f::Zero();         ///< Used to orient normals.
 };
 
@@ -61,6 +73,9 @@ float adaptiveTableMargin(const std::vector<float>& distances, const PreprocessP
 /// the side most points are on).
 bool estimateSupportingPlane(const Cloud& cloud, const PreprocessParams& params,
                              const std::optional<Eigen::Vector3f>& viewpoint, PlaneCoefficients& plane);
+
+/// The supporting surface as methods report it (plane and, when cropped to it, its polygon).
+std::optional<SupportSurface> supportSurface(const PreprocessedScene& scene);
 
 /// Expands per-downsampled-point indices to the input points they represent (sorted).
 std::vector<int> expandToInput(const PreprocessedScene& scene, const std::vector<int>& voxel_indices);

@@ -26,6 +26,12 @@ struct Segment {
   std::optional<SegmentScores> scores;
 };
 
+/// The surface the objects stand on: only points over its polygon were segmented.
+struct SupportSurface {
+  Eigen::Vector4f plane = Eigen::Vector4f::Zero();  ///< a x + b y + c z + d = 0, normal pointing up.
+  std::vector<Eigen::Vector3f> polygon;              ///< Corners in order, on the plane; empty: not cropped.
+};
+
 /// Stage name and wall time in milliseconds, in execution order; "total" last.
 using Timings = std::vector<std::pair<std::string, double>>;
 
@@ -34,6 +40,7 @@ using Counts = std::vector<std::pair<std::string, std::size_t>>;
 
 struct SegmentationResult {
   std::size_t input_points = 0;
+  std::optional<SupportSurface> support;
   std::vector<Segment> segments;
   Timings timing_ms;
   Counts counts;

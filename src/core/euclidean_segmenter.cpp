@@ -15,6 +15,7 @@ SegmentationResult EuclideanSegmenter::segment(const Scene& scene) const {
   SegmentationResult result;
   result.input_points = scene.size();
   const PreprocessedScene prepared = preprocess(scene, preprocessing_);
+  result.support = supportSurface(prepared);
   result.timing_ms.emplace_back("preprocess", stage.lap());
 
   pcl::EuclideanClusterExtraction<PointT> extraction;

@@ -20,6 +20,7 @@ SegmentationResult LccpSegmenter::segment(const Scene& scene) const {
   SegmentationResult result;
   result.input_points = scene.size();
   const PreprocessedScene prepared = preprocess(scene, preprocessing_);
+  result.support = supportSurface(prepared);
   result.timing_ms.emplace_back("preprocess", stage.lap());
 
   // PCL's supervoxels orient normals toward the coordinate origin, so work in a frame centred

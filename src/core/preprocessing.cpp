@@ -1,13 +1,15 @@
-// Preprocessing pipeline: finite points -> supporting plane -> points above it -> voxel grid
-// -> normals. Keeps the input<->voxel maps so every method reports on the input cloud.
+// Preprocessing pipeline: finite points -> supporting plane -> points above it and over its
+// extent -> voxel grid -> normals. Keeps the input<->voxel maps so every method reports on the input cloud.
 #include "symmetry_segmentation/preprocessing.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <pcl/features/normal_3d.h>
 #include <pcl/features/normal_3d_omp.h>
 #include <pcl/search/kdtree.h>
+#include <pcl/segmentation/extract_clusters.h>
 
 #include "symmetry_segmentation/errors.h"
 #include "symmetry_segmentation/voxel_grid.h"
@@ -18,6 +20,13 @@ namespace {
 // Below this the table leaves slivers of itself above the cut, and they are mirror images of
 // each other about any vertical plane: a symmetric "object" the cut happily joins to the real one.
 constexpr float kMinTableMargin = 0.005f;
+// Leaf of the coarse copy the table is found in (m); how far apart (in its voxels) the table's
+// points may be and still be one table, and the points above it one group.
+constexpr float kCoarseLeaf = 0.015f;
+constexpr float kTableConnectVoxels = 3.0f;
+constexpr float kGroupConnectVoxels = 2.0f;
+// A group of points above the table with this share over the table's polygon stands on it.
+constexpr float kStandingShare = 0.5f;
 
 bool isFinitePoint(const PointT& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
@@ -66,6 +75,38 @@ void estimateMissingNormals(Cloud& cloud, const Eigen::Vector3f& viewpoint, floa
   }
 }
 
+// Which coarse voxels over the table go on: those over its polygon, and every voxel of a group
+// (connected above the table) that mostly is - an object at the edge of a fused scan reaches
+// past the table seen around it, while the background of a single view stands elsewhere.
+std::vector<bool> voxelsOverSupport(const Cloud& coarse, const std::vector<bool>& above, const SupportPolygon& polygon,
+                                    float connect_distance) {
+  std::vector<bool> keep(coarse.size(), false);
+  auto candidates = std::make_shared<Cloud>();
+  std::vector<int> candidate_voxel;
+  for (std::size_t v = 0; v < coarse.size(); ++v) {
+    if (!above[v]) continue;
+    candidates->push_back(coarse.points[v]);
+    candidate_voxel.push_back(static_cast<int>(v));
+  }
+  if (candidates->empty()) return keep;
+  pcl::EuclideanClusterExtraction<PointT> grouping;
+  grouping.setClusterTolerance(connect_distance);
+  grouping.setMinClusterSize(1);
+  grouping.setSearchMethod(std::make_shared<pcl::search::KdTree<PointT>>());
+  grouping.setInputCloud(candidates);
+  std::vector<pcl::PointIndices> groups;
+  grouping.extract(groups);
+  for (const pcl::PointIndices& group : groups) {
+    std::size_t over = 0;
+    for (int k : group.indices) over += polygon.contains(candidates->points[k].getVector3fMap());
+    const bool stands = static_cast<float>(over) >= kStandingShare * static_cast<float>(group.indices.size());
+    for (int k : group.indices) {
+      if (stands || polygon.contains(candidates->points[k].getVector3fMap())) keep[candidate_voxel[k]] = true;
+    }
+  }
+  return keep;
+}
+
 }  // namespace
 
 float adaptiveTableMargin(const std::vector<float>& distances, const PreprocessParams& params) {
@@ -109,7 +150,9 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
   if (params.remove_table) {
     PlaneCoefficients plane;
     // With the cloud's normals (fused clouds), which way each surface faces helps tell the table.
-    const auto coarse = voxelDownsample(input, finite, std::max(params.voxel_size, 0.015f), scene.has_normals).cloud;
+    const float coarse_leaf = std::max(params.voxel_size, kCoarseLeaf);
+    const VoxelGridResult coarse_grid = voxelDownsample(input, finite, coarse_leaf, scene.has_normals);
+    const auto& coarse = coarse_grid.cloud;
     bool found = false;
     if (scene.table_plane) {
       plane = *scene.table_plane;
@@ -128,15 +171,41 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
         distances[k] = out.table_plane.head<3>().dot(input.points[finite[k]].getVector3fMap()) + out.table_plane[3];
       }
       out.table_margin = params.adaptive_table_margin ? adaptiveTableMargin(distances, params) : params.table_margin;
+      const float max_height = params.max_object_height > 0.0f ? params.max_object_height
+                                                                : std::numeric_limits<float>::infinity();
+      // The table's extent: only what stands over it goes on (walls, floor, background do not).
+      std::vector<bool> input_over_support;
+      if (params.crop_to_support) {
+        out.support_polygon = SupportPolygon::fromPlanePoints(*coarse, out.table_plane, params.ransac_distance,
+                                                              kTableConnectVoxels * coarse_leaf, params.support_margin);
+      }
+      if (out.support_polygon) {
+        std::vector<bool> coarse_above(coarse->size());
+        for (std::size_t v = 0; v < coarse->size(); ++v) {
+          const float height = out.table_plane.head<3>().dot(coarse->points[v].getVector3fMap()) + out.table_plane[3];
+          coarse_above[v] = height > out.table_margin && height <= max_height;
+        }
+        const std::vector<bool> keep =
+            voxelsOverSupport(*coarse, coarse_above, *out.support_polygon, kGroupConnectVoxels * coarse_leaf);
+        // A voxel straddling the margin is no group's: its points go by the polygon alone.
+        input_over_support.assign(input.size(), false);
+        for (std::size_t v = 0; v < keep.size(); ++v) {
+          for (int i : coarse_grid.members[v]) {
+            input_over_support[i] = coarse_above[v] ? keep[v] : out.support_polygon->contains(input.points[i].getVector3fMap());
+          }
+        }
+      }
       std::vector<int> above;
       above.reserve(finite.size());
       for (std::size_t k = 0; k < finite.size(); ++k) {
-        if (distances[k] > out.table_margin) above.push_back(finite[k]);
+        if (distances[k] <= out.table_margin || distances[k] > max_height) continue;
+        if (!input_over_support.empty() && !input_over_support[finite[k]]) continue;
+        above.push_back(finite[k]);
       }
       finite.swap(above);
     }
   }
-  if (finite.empty()) throw InputError(scene.cloud_path, "no points left above the supporting plane");
+  if (finite.empty()) throw InputError(scene.cloud_path, "no points left above the supporting plane (over its extent, below max_object_height)");
   out.kept_input_indices = finite;
 
   auto grid = voxelDownsample(input, finite, params.voxel_size, scene.has_normals);
@@ -165,6 +234,14 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
     }
   }
   return out;
+}
+
+std::optional<SupportSurface> supportSurface(const PreprocessedScene& scene) {
+  if (!scene.has_table) return std::nullopt;
+  SupportSurface support;
+  support.plane = scene.table_plane;
+  if (scene.support_polygon) support.polygon = scene.support_polygon->corners();
+  return support;
 }
 
 std::vector<int> expandToInput(const PreprocessedScene& scene, const std::vector<int>& voxel_indices) {

@@ -16,7 +16,16 @@ using Json = nlohmann::ordered_json;
 std::string toJson(const SegmentationResult& result) {
   // Hand-laid top level so a person can read it: one segment per line, indices inline.
   std::ostringstream out;
-  out << "{\"input_points\": " << result.input_points << ",\n \"segments\": [";
+  out << "{\"input_points\": " << result.input_points << ",\n";
+  if (result.support) {
+    const auto& plane = result.support->plane;
+    Json support;
+    support["plane"] = {plane[0], plane[1], plane[2], plane[3]};
+    support["polygon"] = Json::array();
+    for (const auto& corner : result.support->polygon) support["polygon"].push_back({corner.x(), corner.y(), corner.z()});
+    out << " \"support\": " << support.dump() << ",\n";
+  }
+  out << " \"segments\": [";
   for (std::size_t i = 0; i < result.segments.size(); ++i) {
     const Segment& segment = result.segments[i];
     Json entry;
@@ -102,6 +111,27 @@ SegmentScores segmentScores(const std::string& path, const Json& scores) {
                        finiteFloat(path, member(path, scores, "smoothness", "'scores'"), "smoothness score")};
 }
 
+std::vector<float> finiteNumbers(const std::string& path, const Json& array, std::size_t size, const std::string& what) {
+  if (!array.is_array() || array.size() != size) malformed(path, what + " needs " + std::to_string(size) + " numbers");
+  std::vector<float> numbers;
+  for (const Json& value : array) numbers.push_back(finiteFloat(path, value, what));
+  return numbers;
+}
+
+SupportSurface supportSurface(const std::string& path, const Json& support) {
+  SupportSurface surface;
+  const std::vector<float> plane = finiteNumbers(path, member(path, support, "plane", "'support'"), 4, "support plane");
+  surface.plane = Eigen::Vector4f(plane[0], plane[1], plane[2], plane[3]);
+  if (!(surface.plane.head<3>().norm() > 0.0f)) malformed(path, "support plane has a zero normal");
+  const Json& polygon = member(path, support, "polygon", "'support'");
+  if (!polygon.is_array()) malformed(path, "support polygon must be an array");
+  for (const Json& corner : polygon) {
+    const std::vector<float> xyz = finiteNumbers(path, corner, 3, "support polygon corner");
+    surface.polygon.emplace_back(xyz[0], xyz[1], xyz[2]);
+  }
+  return surface;
+}
+
 Segment readSegment(const std::string& path, const Json& entry, std::size_t input_points) {
   Segment segment;
   segment.indices = segmentIndices(path, member(path, entry, "indices", "each segment"), input_points);
@@ -142,6 +172,7 @@ SegmentationResult readSegmentsJson(const std::string& path) {
       malformed(path, "'input_points' is larger than an index can be");
     }
     result.input_points = static_cast<std::size_t>(input_points);
+    if (json.contains("support")) result.support = supportSurface(path, json["support"]);
     const Json& segments = member(path, json, "segments", "the top level");
     if (!segments.is_array()) malformed(path, "'segments' must be an array");
     for (const Json& entry : segments) result.segments.push_back(readSegment(path, entry, result.input_points));

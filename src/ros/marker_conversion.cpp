@@ -18,6 +18,7 @@ namespace {
 constexpr double kPlaneThickness = 0.002;  // m
 constexpr double kArrowLength = 0.1;       // m
 constexpr float kObjectListHeight = 0.2f;  // m above the highest point
+constexpr double kSupportLineWidth = 0.005;  // m
 
 geometry_msgs::Point toPoint(const Eigen::Vector3f& v) {
   geometry_msgs::Point p;
@@ -124,6 +125,17 @@ visualization_msgs::MarkerArray symmetryMarkers(const Cloud& cloud, const Segmen
     text.color = colorOf(s, 1.0f);
     text.text = std::to_string(id);
     markers.markers.push_back(text);
+  }
+
+  // The table's extent: outside it nothing was segmented.
+  if (result.support && result.support->polygon.size() >= 3) {
+    auto outline = baseMarker(header, "support", 0, visualization_msgs::Marker::LINE_STRIP);
+    for (const Eigen::Vector3f& corner : result.support->polygon) outline.points.push_back(toPoint(corner));
+    outline.points.push_back(outline.points.front());
+    outline.scale.x = kSupportLineWidth;
+    outline.color.r = outline.color.g = outline.color.b = 0.9f;
+    outline.color.a = 1.0f;
+    markers.markers.push_back(outline);
   }
 
   // The object list (rviz has no list display): one text, centred above the whole cloud.

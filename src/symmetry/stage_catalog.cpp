@@ -16,6 +16,7 @@
 #include "symmetry_segmentation/symmetry/islands.h"
 #include "symmetry_segmentation/symmetry/mirror_twins.h"
 #include "symmetry_segmentation/symmetry/nested_segments.h"
+#include "symmetry_segmentation/symmetry/object_size.h"
 #include "symmetry_segmentation/symmetry/normal_edge_curves.h"
 #include "symmetry_segmentation/symmetry/object_bottom_stage.h"
 #include "symmetry_segmentation/symmetry/plane_refinement.h"
@@ -80,6 +81,9 @@ const std::vector<StageInfo>& stageCatalog() {
       {"color_seams", K::SegmentRewriter, "flush objects of different colours are split at their colour seam",
        {P::Candidates, P::Segments}, {},
        [](const Config& c) { return made<ColorSeamStage>(c.symmetry.color_seams, c.symmetry.filter); }},
+      {"object_size", K::SegmentRewriter, "a segment larger than a graspable object, or mostly one wide plane, is dropped",
+       {P::Segments}, {},
+       [](const Config& c) { return made<ObjectSizeStage>(c.symmetry.object_size, c.preprocessing.voxel_size); }},
       {"dedup", K::SegmentRewriter, "of segments overlapping by most of the smaller, the cleanest boundary stays (paper)",
        {P::Segments}, {},
        [](const Config& c) { return made<DuplicateStage>(c.symmetry.dedup); }},

@@ -25,6 +25,7 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
 
   SegmentationResult result;
   result.input_points = scene.size();
+  result.support = supportSurface(state.prepared);
   result.segments = reportedSegments(state);
   result.timing_ms = std::move(state.timing_ms);
   result.timing_ms.emplace_back("total", total.elapsedMs());

@@ -2,6 +2,8 @@
 // and parameters from the private namespace. No roscore needed.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <limits>
 
@@ -487,6 +489,20 @@ TEST(MarkerConversion, DeleteAllThenPlanePatchArrowAndText) {
   EXPECT_EQ(none.markers[0].action, visualization_msgs::Marker::DELETEALL);
   EXPECT_EQ(none.markers[1].text, "0 objects");
   EXPECT_EQ(ss::symmetryMarkers(ss::Cloud(), ss::SegmentationResult{}, header).markers.size(), 1u);
+
+  // The table's extent, when the result has one: a closed outline through its corners.
+  ss::SegmentationResult with_support;
+  with_support.support = ss::SupportSurface{Eigen::Vector4f(0, 0, 1, -0.7f),
+                                            {{0.f, 0.f, 0.7f}, {1.f, 0.f, 0.7f}, {0.5f, 1.f, 0.7f}}};
+  const auto outlined = ss::symmetryMarkers(cloud, with_support, header);
+  const auto support = std::find_if(outlined.markers.begin(), outlined.markers.end(),
+                                    [](const visualization_msgs::Marker& m) { return m.ns == "support"; });
+  ASSERT_NE(support, outlined.markers.end());
+  EXPECT_EQ(support->type, visualization_msgs::Marker::LINE_STRIP);
+  ASSERT_EQ(support->points.size(), 4u);
+  EXPECT_NEAR(support->points[1].x, 1.0, 1e-6);
+  EXPECT_NEAR(support->points[3].x, support->points[0].x, 1e-9);
+  EXPECT_NEAR(support->points[2].z, 0.7, 1e-6);
 }
 
 TEST(MarkerConversion, ObjectListCountsUsablePointsAndShowsScores) {

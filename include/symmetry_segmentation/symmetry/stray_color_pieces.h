@@ -1,5 +1,5 @@
 #pragma once
-// Stage 17, stray_color_pieces (our addition): along a crease where two objects touch, a cut may
+// Stage 18, stray_color_pieces (our addition): along a crease where two objects touch, a cut may
 // take a strip of the neighbour (the top of a shorter box in a row). After deduplication a small
 // region of a segment coloured unlike the rest of it and like an adjacent segment moves there;
 // print matches no neighbour and stays. Needs colour.

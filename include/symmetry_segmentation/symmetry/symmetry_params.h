@@ -327,6 +327,22 @@ inline void describeParameters(ParameterList<ColorSeamParams>& list) {
       .add("min_plane_share", &P::min_plane_share, 0.0, 1.0, "", "a found segment's plane is tried on a part it covers this share of");
 }
 
+/// Stage object_size: only what a robot could grasp is an object.
+struct ObjectSizeParams {
+  float max_extent = 0.5f;
+  float max_plane_extent = 0.4f;
+  float min_plane_share = 0.9f;
+};
+
+inline void describeParameters(ParameterList<ObjectSizeParams>& list) {
+  using P = ObjectSizeParams;
+  list.add("max_extent", &P::max_extent, 0.0, 100.0, "m",
+           "larger along any axis (height over the table, footprint sides) is not a graspable object; 0: no limit")
+      .add("max_plane_extent", &P::max_plane_extent, 0.0, 100.0, "m",
+           "a segment mostly on one plane wider than this is a wall or table, not an object; 0: no limit")
+      .add("min_plane_share", &P::min_plane_share, 0.0, 1.0, "", "mostly on one plane: this share of its points");
+}
+
 /// Stage dedup: one segment per object.
 struct DuplicateParams {
   float max_overlap = 0.7f;
@@ -357,7 +373,7 @@ struct SymmetryParams {
   std::vector<std::string> stages = {"curves",  "curve_pairs", "upright",         "cut",          "refine",
                                      "islands", "footprints",  "cut",             "refine",       "filter",
                                      "island_segments",        "mirror_twins",    "composites",   "nested",
-                                     "color_seams",            "dedup",           "stray_color_pieces", "object_bottoms"};
+                                     "color_seams",            "object_size",     "dedup",           "stray_color_pieces", "object_bottoms"};
   NormalEdgeCurveParams curves;
   CurvePairParams curve_pairs;
   UprightHypothesisParams upright;
@@ -371,6 +387,7 @@ struct SymmetryParams {
   CompositeSegmentParams composites;
   NestedSegmentParams nested;
   ColorSeamParams color_seams;
+  ObjectSizeParams object_size;
   DuplicateParams dedup;
   StrayColorParams stray_color_pieces;
 };

@@ -1,0 +1,38 @@
+#pragma once
+// The extent of the supporting surface: the convex polygon of the table's own points, grown by a
+// margin. Only what stands over it is a tabletop object; walls, the floor, other furniture and
+// the far background of a single view lie outside it (a plane is mirror-symmetric about every
+// plane across it, so symmetry alone never rules them out).
+
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "symmetry_segmentation/scene.h"
+
+namespace symmetry_segmentation {
+
+class SupportPolygon {
+ public:
+  /// The polygon of the points of `cloud` within `on_plane_distance` of `plane` (the largest
+  /// group of them connected within `connect_distance`: a coplanar shelf or second table apart
+  /// stays out), grown by `margin`. None when fewer than three such points span an area.
+  static std::optional<SupportPolygon> fromPlanePoints(const Cloud& cloud, const PlaneCoefficients& plane,
+                                                       float on_plane_distance, float connect_distance, float margin);
+
+  /// Whether `point` lies over (or under) the polygon, along the plane's normal.
+  bool contains(const Eigen::Vector3f& point) const;
+
+  /// The corners on the plane, in order around it (input frame).
+  std::vector<Eigen::Vector3f> corners() const;
+
+ private:
+  Eigen::Vector2f inPlane(const Eigen::Vector3f& point) const;
+
+  Eigen::Vector3f origin_ = Eigen::Vector3f::Zero();  ///< On the plane.
+  Eigen::Vector3f u_ = Eigen::Vector3f::UnitX(), v_ = Eigen::Vector3f::UnitY();  ///< In-plane axes.
+  std::vector<Eigen::Vector2f> corners_;  ///< Counter-clockwise in (u, v).
+};
+
+}  // namespace symmetry_segmentation

@@ -1,0 +1,39 @@
+#pragma once
+// Stage 16, object_size (our addition): only what a robot could grasp is an object. A plane
+// is mirror-symmetric about every plane across it, so a wall, a table remnant or a shelf passes
+// every symmetry test; what gives them away is their size. A segment larger than max_extent
+// along any axis (height over the table, or its footprint's sides), or mostly one plane wider
+// than max_plane_extent, is dropped. Extents leave out 5 % of the points at either end: a few
+// stray points of a neighbour do not make an object large.
+
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "symmetry_segmentation/scene.h"
+#include "symmetry_segmentation/symmetry/stage.h"
+#include "symmetry_segmentation/symmetry/symmetry_params.h"
+
+namespace symmetry_segmentation {
+
+/// The extents (m) of `points` of `cloud` along three axes, largest first: with `up`, the height
+/// along it and the sides of the footprint (principal axes in the plane normal to it), else the
+/// principal axes.
+Eigen::Vector3f segmentExtents(const Cloud& cloud, const std::vector<int>& points, const std::optional<Eigen::Vector3f>& up);
+
+/// Whether `points` of `cloud` are a graspable object under `params` (see the header).
+bool hasObjectSize(const Cloud::ConstPtr& cloud, const std::vector<int>& points, const std::optional<Eigen::Vector3f>& up,
+                   const ObjectSizeParams& params, float plane_distance);
+
+class ObjectSizeStage : public Stage {
+ public:
+  ObjectSizeStage(const ObjectSizeParams& params, float voxel_size) : params_(params), voxel_size_(voxel_size) {}
+  void run(PipelineState& state) const override;
+
+ private:
+  ObjectSizeParams params_;
+  float voxel_size_;
+};
+
+}  // namespace symmetry_segmentation

@@ -1,0 +1,119 @@
+// Stage 16, object_size: only what a robot could grasp is an object (see the header).
+#include "symmetry_segmentation/symmetry/object_size.h"
+
+#include <algorithm>
+#include <functional>
+#include <limits>
+
+#include <Eigen/Eigenvalues>
+#include <pcl/ModelCoefficients.h>
+#include <pcl/PointIndices.h>
+#include <pcl/sample_consensus/method_types.h>
+#include <pcl/sample_consensus/model_types.h>
+#include <pcl/segmentation/sac_segmentation.h>
+
+#include "symmetry_segmentation/symmetry/pipeline_state.h"
+
+namespace symmetry_segmentation {
+namespace {
+
+constexpr int kPlaneIterations = 200;
+// Share of the points left out at either end of an extent.
+constexpr float kTrim = 0.05f;
+
+float trimmedSpan(std::vector<float>& values) {
+  const auto at = [&values](float quantile) {
+    const auto k = static_cast<std::ptrdiff_t>(quantile * static_cast<float>(values.size() - 1));
+    std::nth_element(values.begin(), values.begin() + k, values.end());
+    return values[static_cast<std::size_t>(k)];
+  };
+  const float low = at(kTrim);
+  const float high = at(1.0f - kTrim);
+  return high - low;
+}
+// Points within this many voxels of a plane are on it (a face's noise at the working resolution).
+constexpr float kOnPlaneVoxels = 1.5f;
+
+/// Extents of `points` along their principal axes, between the kTrim and 1 - kTrim quantiles:
+/// a few stray points of a neighbour or of the background do not make an object large.
+template <int Dims>
+Eigen::Matrix<float, Dims, 1> principalExtents(const std::vector<Eigen::Matrix<float, Dims, 1>>& points) {
+  using Vector = Eigen::Matrix<float, Dims, 1>;
+  using Matrix = Eigen::Matrix<float, Dims, Dims>;
+  Vector mean = Vector::Zero();
+  for (const Vector& p : points) mean += p;
+  mean /= static_cast<float>(points.size());
+  Matrix covariance = Matrix::Zero();
+  for (const Vector& p : points) covariance += (p - mean) * (p - mean).transpose();
+  const Matrix axes = Eigen::SelfAdjointEigenSolver<Matrix>(covariance).eigenvectors();
+  Vector extents;
+  std::vector<float> along(points.size());
+  for (int d = 0; d < Dims; ++d) {
+    for (std::size_t i = 0; i < points.size(); ++i) along[i] = axes.col(d).dot(points[i] - mean);
+    extents[d] = trimmedSpan(along);
+  }
+  return extents;
+}
+
+}  // namespace
+
+Eigen::Vector3f segmentExtents(const Cloud& cloud, const std::vector<int>& points, const std::optional<Eigen::Vector3f>& up) {
+  if (points.empty()) return Eigen::Vector3f::Zero();
+  Eigen::Vector3f extents;
+  if (up) {
+    const Eigen::Vector3f normal = up->normalized();
+    const Eigen::Vector3f u = normal.unitOrthogonal();
+    const Eigen::Vector3f v = normal.cross(u);
+    std::vector<Eigen::Vector2f> footprint;
+    footprint.reserve(points.size());
+    std::vector<float> heights;
+    heights.reserve(points.size());
+    for (int i : points) {
+      const Eigen::Vector3f p = cloud[i].getVector3fMap();
+      footprint.emplace_back(u.dot(p), v.dot(p));
+      heights.push_back(normal.dot(p));
+    }
+    extents << principalExtents<2>(footprint), trimmedSpan(heights);
+  } else {
+    std::vector<Eigen::Vector3f> all;
+    all.reserve(points.size());
+    for (int i : points) all.push_back(cloud[i].getVector3fMap());
+    extents = principalExtents<3>(all);
+  }
+  std::sort(extents.data(), extents.data() + 3, std::greater<float>());
+  return extents;
+}
+
+bool hasObjectSize(const Cloud::ConstPtr& cloud, const std::vector<int>& points, const std::optional<Eigen::Vector3f>& up,
+                   const ObjectSizeParams& params, float plane_distance) {
+  if (points.size() < 3) return true;
+  if (params.max_extent > 0.0f && segmentExtents(*cloud, points, up)[0] > params.max_extent) return false;
+  if (params.max_plane_extent <= 0.0f) return true;
+  // Mostly one plane: the largest plane's share of the points, and how wide that plane is.
+  pcl::SACSegmentation<PointT> ransac;
+  ransac.setModelType(pcl::SACMODEL_PLANE);
+  ransac.setMethodType(pcl::SAC_RANSAC);
+  ransac.setDistanceThreshold(plane_distance);
+  ransac.setMaxIterations(kPlaneIterations);
+  ransac.setInputCloud(cloud);
+  ransac.setIndices(std::make_shared<pcl::Indices>(points.begin(), points.end()));
+  pcl::PointIndices inliers;
+  pcl::ModelCoefficients coefficients;
+  ransac.segment(inliers, coefficients);
+  if (static_cast<float>(inliers.indices.size()) < params.min_plane_share * static_cast<float>(points.size())) return true;
+  const std::vector<int> on_plane(inliers.indices.begin(), inliers.indices.end());
+  return segmentExtents(*cloud, on_plane, std::nullopt)[0] <= params.max_plane_extent;
+}
+
+void ObjectSizeStage::run(PipelineState& state) const {
+  const float plane_distance = kOnPlaneVoxels * voxel_size_;
+  const std::size_t before = state.segments.size();
+  state.segments.erase(std::remove_if(state.segments.begin(), state.segments.end(),
+                                      [&](const CandidateSegment& segment) {
+                                        return !hasObjectSize(state.cloud, segment.points, state.up, params_, plane_distance);
+                                      }),
+                       state.segments.end());
+  state.count("dropped", before - state.segments.size());
+}
+
+}  // namespace symmetry_segmentation
