@@ -111,6 +111,28 @@ TEST(Preprocessing, NothingAboveTheTableIsAnError) {
   EXPECT_GT(ss::preprocess(scene, keep_table).cloud->size(), 100u);
 }
 
+TEST(Preprocessing, RegionOfInterestSelectsObjectsButNotTheTable) {
+  // A box drawn around one object, starting above the table: the table is still found in the
+  // whole cloud, and only what is inside the box goes on.
+  ss::Scene scene = tableWithBox(true);
+  test_clouds::addBox(*scene.cloud, {-0.3f, -0.3f, 0.0f}, {0.08f, 0.08f, 0.1f}, 0.004f);
+  scene.region_of_interest = Eigen::AlignedBox3f(Eigen::Vector3f(-0.05f, -0.05f, 0.05f), Eigen::Vector3f(0.15f, 0.15f, 1.0f));
+  const auto prepared = ss::preprocess(scene, ss::PreprocessParams{});
+  ASSERT_TRUE(prepared.has_table);
+  EXPECT_NEAR(prepared.table_plane[3], 0.0f, 0.005f);
+  ASSERT_FALSE(prepared.kept_input_indices.empty());
+  for (int i : prepared.kept_input_indices) {
+    EXPECT_TRUE(scene.region_of_interest->contains(scene.cloud->points[i].getVector3fMap()));
+  }
+  // Nothing of the object's part in the box is lost.
+  std::size_t inside = 0;
+  for (const auto& p : scene.cloud->points) inside += scene.region_of_interest->contains(p.getVector3fMap());
+  EXPECT_EQ(prepared.kept_input_indices.size(), inside);
+  // A box around nothing is an input error, not an empty result.
+  scene.region_of_interest = Eigen::AlignedBox3f(Eigen::Vector3f(0.2f, 0.2f, 0.05f), Eigen::Vector3f(0.3f, 0.3f, 1.0f));
+  EXPECT_THROW(ss::preprocess(scene, ss::PreprocessParams{}), ss::InputError);
+}
+
 TEST(Preprocessing, AdaptiveTableMarginFollowsTheTableNoise) {
   ss::PreprocessParams params;  // ransac_distance 1 cm, table_margin 1 cm
   std::vector<float> noisy;

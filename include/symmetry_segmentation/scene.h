@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
@@ -35,6 +36,9 @@ struct Scene {
   std::vector<Eigen::Vector3f> sensor_origins;
   std::shared_ptr<octomap::OcTree> occupancy;  ///< May be null: no map on disk.
   std::optional<PlaneCoefficients> table_plane;
+  /// Only points inside this box (cloud frame) are segmented. The table is still found in the
+  /// whole cloud: a box drawn around objects need not hold the table they stand on.
+  std::optional<Eigen::AlignedBox3f> region_of_interest;
   std::vector<int> labels;  ///< Ground truth per cloud point (0 = not an object); empty if none.
   /// The cloud file's own per-point "label" field as stored (e.g. the ground truth of OSD / mOSD
   /// frames, see evaluation/ground_truth.h); empty when the file has none.

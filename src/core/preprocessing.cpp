@@ -205,7 +205,19 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
       finite.swap(above);
     }
   }
-  if (finite.empty()) throw InputError(scene.cloud_path, "no points left above the supporting plane (over its extent, below max_object_height)");
+  if (scene.region_of_interest) {
+    const Eigen::AlignedBox3f& box = *scene.region_of_interest;
+    finite.erase(std::remove_if(finite.begin(), finite.end(),
+                                [&](int i) { return !box.contains(input.points[i].getVector3fMap()); }),
+                 finite.end());
+  }
+  if (finite.empty()) {
+    throw InputError(scene.cloud_path, scene.region_of_interest
+                                           ? "no points left inside the region of interest above the supporting plane "
+                                             "(over its extent, below max_object_height)"
+                                           : "no points left above the supporting plane (over its extent, below "
+                                             "max_object_height)");
+  }
   out.kept_input_indices = finite;
 
   auto grid = voxelDownsample(input, finite, params.voxel_size, scene.has_normals);

@@ -124,10 +124,10 @@ Scene sceneFromCloudMessage(const sensor_msgs::PointCloud2& message) {
   return scene;
 }
 
-std::size_t countFinitePoints(const Cloud& cloud) {
+std::size_t countFinitePoints(const Cloud& cloud, const std::optional<Eigen::AlignedBox3f>& region) {
   std::size_t count = 0;
   for (const auto& p : cloud.points) {
-    if (isUsablePoint(p)) ++count;
+    if (isUsablePoint(p) && (!region || region->contains(p.getVector3fMap()))) ++count;
   }
   return count;
 }
@@ -141,18 +141,10 @@ void transformCloud(Cloud& cloud, const Eigen::Isometry3d& transform, bool with_
   }
 }
 
-void cropToBox(Cloud& cloud, const Eigen::Vector3f& min, const Eigen::Vector3f& max) {
+Eigen::AlignedBox3f regionOfInterest(const Eigen::Vector3f& min, const Eigen::Vector3f& max) {
   if (!min.allFinite() || !max.allFinite()) throw InputError("region of interest is not finite");
   if ((min.array() > max.array()).any()) throw InputError("region of interest is empty (min > max on some axis)");
-  const float nan = std::numeric_limits<float>::quiet_NaN();
-  for (auto& p : cloud.points) {
-    const Eigen::Vector3f xyz(p.x, p.y, p.z);
-    if (!xyz.allFinite()) continue;
-    if ((xyz.array() < min.array()).any() || (xyz.array() > max.array()).any()) {
-      p.x = p.y = p.z = nan;
-    }
-  }
-  cloud.is_dense = false;
+  return Eigen::AlignedBox3f(min, max);
 }
 
 }  // namespace symmetry_segmentation

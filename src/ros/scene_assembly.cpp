@@ -16,12 +16,12 @@ Scene assembleScene(const sensor_msgs::PointCloud2& cloud, const SceneInputs& in
       transformCloud(*scene.cloud, inputs.cloud_to_processing, scene.has_normals);
     }
     if (inputs.region_of_interest) {
-      cropToBox(*scene.cloud, inputs.region_of_interest->min, inputs.region_of_interest->max);
+      scene.region_of_interest = regionOfInterest(inputs.region_of_interest->min, inputs.region_of_interest->max);
     }
   } catch (const InputError& error) {
     throw RequestError(Response::INVALID_INPUT, error.what());
   }
-  if (countFinitePoints(*scene.cloud) == 0) {
+  if (countFinitePoints(*scene.cloud, scene.region_of_interest) == 0) {
     throw RequestError(Response::INVALID_INPUT,
                        inputs.region_of_interest ? "no finite point inside the region of interest"
                                                  : "cloud has no finite point");
@@ -35,7 +35,9 @@ Scene assembleScene(const sensor_msgs::PointCloud2& cloud, const SceneInputs& in
   } else if (inputs.occupancy_for_region) {
     Eigen::AlignedBox3d box;
     for (const auto& p : scene.cloud->points) {
-      if (isUsablePoint(p)) box.extend(p.getVector3fMap().cast<double>());
+      if (!isUsablePoint(p)) continue;
+      if (scene.region_of_interest && !scene.region_of_interest->contains(p.getVector3fMap())) continue;
+      box.extend(p.getVector3fMap().cast<double>());
     }
     const Eigen::Vector3d margin = Eigen::Vector3d::Constant(kMapMargin);
     try {

@@ -318,15 +318,16 @@ TEST(CloudConversion, TransformMovesPointsAndRotatesNormals) {
   EXPECT_NEAR(cloud[0].normal_y, 1.0f, 1e-6f);
 }
 
-TEST(CloudConversion, CropToBoxKeepsIndices) {
+TEST(CloudConversion, RegionOfInterestIsValidatedAndCounted) {
   ss::Cloud cloud;
   cloud.push_back(point(0, 0, 0));
   cloud.push_back(point(2, 0, 0));
-  ss::cropToBox(cloud, Eigen::Vector3f(-1, -1, -1), Eigen::Vector3f(1, 1, 1));
-  ASSERT_EQ(cloud.size(), 2u);
-  EXPECT_FLOAT_EQ(cloud[0].x, 0.0f);
-  EXPECT_TRUE(std::isnan(cloud[1].x));
-  EXPECT_THROW(ss::cropToBox(cloud, Eigen::Vector3f(1, 0, 0), Eigen::Vector3f(0, 1, 1)), ss::InputError);
+  const Eigen::AlignedBox3f box = ss::regionOfInterest(Eigen::Vector3f(-1, -1, -1), Eigen::Vector3f(1, 1, 1));
+  EXPECT_EQ(ss::countFinitePoints(cloud, box), 1u);
+  EXPECT_EQ(ss::countFinitePoints(cloud), 2u);
+  EXPECT_THROW(ss::regionOfInterest(Eigen::Vector3f(1, 0, 0), Eigen::Vector3f(0, 1, 1)), ss::InputError);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_THROW(ss::regionOfInterest(Eigen::Vector3f(nan, 0, 0), Eigen::Vector3f(0, 1, 1)), ss::InputError);
 }
 
 TEST(SceneAssembly, StatusPerFailureCause) {

@@ -31,14 +31,14 @@ std::string cloudMessageProblem(const sensor_msgs::PointCloud2& message, const C
 /// (frame id not required) finds one.
 Scene sceneFromCloudMessage(const sensor_msgs::PointCloud2& message);
 
-/// Points the pipeline can use (isUsablePoint: finite, within 100 km).
-std::size_t countFinitePoints(const Cloud& cloud);
+/// Points the pipeline can use (isUsablePoint: finite, within 100 km), inside `region` when given.
+std::size_t countFinitePoints(const Cloud& cloud, const std::optional<Eigen::AlignedBox3f>& region = std::nullopt);
 
 /// Applies a rigid transform to points (and normals when `with_normals`).
 void transformCloud(Cloud& cloud, const Eigen::Isometry3d& transform, bool with_normals);
 
-/// Points outside the axis-aligned box [min, max] become NaN (they keep their index).
+/// The region of interest [min, max] as a box for Scene::region_of_interest.
 /// Throws InputError when the box is empty (min > max on some axis) or not finite.
-void cropToBox(Cloud& cloud, const Eigen::Vector3f& min, const Eigen::Vector3f& max);
+Eigen::AlignedBox3f regionOfInterest(const Eigen::Vector3f& min, const Eigen::Vector3f& max);
 
 }  // namespace symmetry_segmentation
