@@ -155,7 +155,7 @@ int objectsAtColorSeams(const std::vector<int>& points, const std::vector<Eigen:
                           concave_links >= params.min_concave_seam_fraction * seam.links &&
                           std::min(part_size[pair.first], part_size[pair.second]) >=
                               params.min_touching_part_fraction * points.size();
-    const bool flat = seam.flat_links >= params.min_seam_links &&
+    const bool flat = params.split_flush_seams && seam.flat_links >= params.min_seam_links &&
                       seam.flat_links >= params.min_flat_seam_fraction * (seam.flat_links + seam.convex_links);
     if (touching || (flat && seamSpansBoth(seam.ends, points, part, pair.first, pair.second, cloud, params.min_seam_span))) {
       between_objects.push_back(pair);

@@ -304,6 +304,7 @@ struct ColorSeamParams {
   float min_touching_part_fraction = 0.25f;
   float min_seam_span = 0.7f;
   float min_plane_share = 0.3f;
+  bool split_flush_seams = false;
   // From symmetry.filter (min_segment_points, smooth_normal_angle_deg): not parameters of their own.
   int min_part_points = 40;
   float flat_link_angle_deg = 15.0f;
@@ -324,7 +325,9 @@ inline void describeParameters(ParameterList<ColorSeamParams>& list) {
            "...are two objects when the smaller has this share (a handle has less)")
       .add("min_seam_span", &P::min_seam_span, 0.0, 1.0, "",
            "a flush seam spans this share of each part along one of its axes (a bottle cap's ring does not)")
-      .add("min_plane_share", &P::min_plane_share, 0.0, 1.0, "", "a found segment's plane is tried on a part it covers this share of");
+      .add("min_plane_share", &P::min_plane_share, 0.0, 1.0, "", "a found segment's plane is tried on a part it covers this share of")
+      .add("split_flush_seams", &P::split_flush_seams,
+           "also split at flat seams (flush boxes of one depth): on real printed objects this splits one object in 12 of 45 OSD frames");
 }
 
 /// Stage object_size: only what a robot could grasp is an object.
