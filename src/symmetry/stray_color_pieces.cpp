@@ -1,4 +1,4 @@
-// Stage 18, stray_color_pieces: strips of a neighbour's colour moved to that neighbour (see the header for why).
+// Optional stage stray_color_pieces: strips of a neighbour's colour moved to that neighbour (see the header for why).
 #include "symmetry_segmentation/symmetry/stray_color_pieces.h"
 
 #include <algorithm>
