@@ -33,6 +33,11 @@ TEST(Config, PresetsSetTheFilterThresholds) {
   const auto balanced = ss::loadConfigFile(test_support::sourceDir() + "/config/balanced.yaml");
   EXPECT_FLOAT_EQ(balanced.symmetry.filter.s_occl, 0.99f);
   EXPECT_FLOAT_EQ(balanced.symmetry.filter.s_smooth, 0.02f);
+  // The paper's method alone: its stages, none of the additions, and a list that runs.
+  const auto paper = ss::loadConfigFile(test_support::sourceDir() + "/config/paper.yaml");
+  EXPECT_EQ(paper.symmetry.stages,
+            (std::vector<std::string>{"curves", "curve_pairs", "cut", "refine", "filter", "dedup", "object_bottoms"}));
+  EXPECT_TRUE(ss::stageListProblems(paper.symmetry.stages).empty());
   ss::SegmentationConfig config;
   ss::setConfigValue(config, "symmetry.filter.s_occl", "0.5");
   EXPECT_FLOAT_EQ(config.symmetry.filter.s_occl, 0.5f);
