@@ -71,3 +71,18 @@ TEST(ObjectBottoms, TheTableStaysOut) {
   EXPECT_EQ(ss::restoreObjectBottoms(box.scene, prepared, box.params.voxel_size, segments, {}), 0u);
   EXPECT_EQ(segments[0].indices, box.boxPoints(&prepared));
 }
+
+TEST(ObjectBottoms, NothingOutsideTheRegionOfInterestIsAdded) {
+  // The region of interest takes only the box's half with x < 5 cm: the bottom strip of the
+  // other half, dropped by the margin like the rest, stays out although it touches the segment.
+  BoxOnTable box;
+  box.scene.region_of_interest = Eigen::AlignedBox3f(Eigen::Vector3f(-0.02f, -0.02f, -0.02f), Eigen::Vector3f(0.05f, 0.1f, 0.2f));
+  const ss::PreprocessedScene prepared = ss::preprocess(box.scene, box.params);
+  std::vector<ss::Segment> segments(1);
+  segments[0].indices = box.boxPoints(&prepared);
+  ASSERT_FALSE(segments[0].indices.empty());
+  EXPECT_GT(ss::restoreObjectBottoms(box.scene, prepared, box.params.voxel_size, segments, {}), 0u);
+  for (int i : segments[0].indices) {
+    EXPECT_TRUE(box.scene.region_of_interest->contains((*box.scene.cloud)[i].getVector3fMap())) << i;
+  }
+}

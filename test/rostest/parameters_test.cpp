@@ -39,7 +39,9 @@ class LogWatch {
       std::lock_guard<std::mutex> lock(mutex_);
       lines_.push_back(m->msg);
     });
-    ros_test::spinUntil([this] { return subscriber_.getNumPublishers() > 0; }, 10);
+    // This process publishes on /rosout too: wait for the nodelet manager's connection as well,
+    // or what the nodelet logs right after loading can go out before it and be lost.
+    ros_test::spinUntil([this] { return subscriber_.getNumPublishers() >= 2; }, 10);
   }
   /// Waits up to `seconds` for a line containing every one of `parts`.
   bool saw(const std::vector<std::string>& parts, double seconds = 10.0) {
