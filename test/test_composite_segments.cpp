@@ -5,6 +5,7 @@
 
 #include "fake_evidence.h"
 #include "symmetry_segmentation/symmetry/composite_segments.h"
+#include "symmetry_segmentation/symmetry/pipeline_state.h"
 
 namespace ss = symmetry_segmentation;
 
@@ -196,4 +197,18 @@ TEST(CompositeSegments, PartsJoinedWithoutACreaseThroughTheRestStayOneObject) {
   ASSERT_EQ(segments.size(), 2u);
   EXPECT_EQ(segments[0].points, segment(0, 59).points);
   EXPECT_EQ(segments[1].points, segment(60, 99).points);
+}
+
+TEST(CompositeSegments, TheStageTakesPartsFromCandidatesTheFilterDidNotKeep) {
+  // Neither object passed the filter alone; their union did. The cuts still found each.
+  ss::PipelineState state;
+  state.evidence = std::make_unique<test_support::FakeEvidence>(evidence(chainNeighbours(), creaseAtSeam, mirrorWithinObject));
+  state.segments = {segment(0, 99, 1.0f)};
+  state.candidates = {segment(0, 99, 1.0f), segment(0, 59, 2.0f), segment(60, 99, 3.0f)};
+  ss::CompositeSegmentParams params;
+  params.min_seam_links = 1;
+  ss::CompositeStage(params).run(state);
+  ASSERT_EQ(state.segments.size(), 2u);
+  EXPECT_EQ(state.segments[0].points, segment(0, 59).points);
+  EXPECT_EQ(state.segments[1].points, segment(60, 99).points);
 }

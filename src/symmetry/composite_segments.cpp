@@ -190,7 +190,13 @@ std::size_t splitCompositeSegments(std::vector<CandidateSegment>& segments, cons
 }
 
 void CompositeStage::run(PipelineState& state) const {
-  const std::vector<CandidateSegment> parts = state.segments;
+  // Parts: the segments and every candidate the cuts made. An object found alone need not pass
+  // the filter by itself (a box on a box, each mirrored by the plane they share) to show where a
+  // segment of two objects parts; the checks on the seam and the plane still decide.
+  std::vector<CandidateSegment> parts = state.segments;
+  for (const CandidateSegment& candidate : state.candidates) {
+    if (!candidate.points.empty()) parts.push_back(candidate);
+  }
   state.count("split", splitCompositeSegments(state.segments, parts, *state.evidence, params_));
 }
 

@@ -23,7 +23,8 @@ namespace symmetry_segmentation {
 std::size_t splitCompositeSegments(std::vector<CandidateSegment>& segments, const std::vector<CandidateSegment>& parts,
                                    const SceneEvidence& evidence, const CompositeSegmentParams& params);
 
-/// The stage: splitCompositeSegments with the segments as they are as the parts.
+/// The stage: splitCompositeSegments with the segments and every candidate (filtered out or
+/// not) as the parts.
 class CompositeStage : public Stage {
  public:
   explicit CompositeStage(const CompositeSegmentParams& params) : params_(params) {}
