@@ -49,4 +49,19 @@ inline void addTable(symmetry_segmentation::Cloud& cloud, float half_extent, flo
   }
 }
 
+/// A wall in the plane y = `y`, facing -y (toward a sensor in front of it): x in
+/// [-half_width, half_width], z in [z_min, z_max].
+inline void addWall(symmetry_segmentation::Cloud& cloud, float y, float half_width, float z_min, float z_max,
+                    float spacing) {
+  for (float x = -half_width; x <= half_width + 1e-6f; x += spacing) {
+    for (float z = z_min; z <= z_max + 1e-6f; z += spacing) {
+      symmetry_segmentation::PointT q;
+      q.x = x; q.y = y; q.z = z;
+      q.normal_x = 0; q.normal_y = -1; q.normal_z = 0;
+      q.r = q.g = q.b = 180;
+      cloud.push_back(q);
+    }
+  }
+}
+
 }  // namespace test_clouds

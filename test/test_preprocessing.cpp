@@ -160,17 +160,7 @@ TEST(Preprocessing, PrefersThePlaneObjectsStandOnToALargerWall) {
   ss::Scene scene;
   scene.cloud = std::make_shared<ss::Cloud>();
   test_clouds::addTable(*scene.cloud, 0.4f, 0.01f);
-  for (float x = -1.0f; x <= 1.0f; x += 0.01f) {
-    for (float z = -0.5f; z <= 0.8f; z += 0.01f) {
-      ss::PointT p;
-      p.x = x;
-      p.y = 0.9f;  // 50 cm behind the table's far edge
-      p.z = z;
-      p.normal_x = p.normal_z = 0.0f;
-      p.normal_y = -1.0f;
-      scene.cloud->push_back(p);
-    }
-  }
+  test_clouds::addWall(*scene.cloud, 0.9f, 1.0f, -0.5f, 0.8f, 0.01f);  // 50 cm behind the table's far edge
   test_clouds::addBox(*scene.cloud, {-0.2f, -0.1f, 0.0f}, {0.1f, 0.08f, 0.12f}, 0.005f);
   test_clouds::addBox(*scene.cloud, {0.1f, 0.0f, 0.0f}, {0.08f, 0.08f, 0.2f}, 0.005f);
   scene.has_normals = true;
@@ -272,8 +262,8 @@ TEST(Preprocessing, KeepsOnlyWhatStandsOverTheTable) {
     p.normal_x = p.normal_y = p.normal_z = NAN;
     scene.cloud->push_back(p);
   };
+  test_clouds::addWall(*scene.cloud, 0.7f, 1.0f, -0.7f, 0.8f, 0.01f);  // 30 cm behind the table
   for (float x = -1.0f; x <= 1.0f; x += 0.01f) {
-    for (float z = -0.7f; z <= 0.8f; z += 0.01f) add(x, 0.7f, z);  // the wall, 30 cm behind the table
     for (float y = -1.0f; y <= 0.7f; y += 0.02f) {
       if (std::fabs(x) > 0.45f || std::fabs(y) > 0.45f) add(x, y, -0.7f);  // the floor, where the table hides none
     }
