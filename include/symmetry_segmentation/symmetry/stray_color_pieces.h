@@ -1,9 +1,9 @@
 #pragma once
 // Optional stage stray_color_pieces (our addition; out of the default list since 2026-12-02: it
 // changed no figure on any data set once flat colour seams stopped splitting): along a crease
-// where two objects touch, a cut may take a strip of the neighbour (the top of a shorter box in a row). After deduplication a small
-// region of a segment coloured unlike the rest of it and like an adjacent segment moves there;
-// print matches no neighbour and stays. Needs colour.
+// where two objects touch, a cut may take a strip of the neighbour (the top of a shorter box
+// in a row). After deduplication a small region of a segment coloured unlike the rest of it and
+// like an adjacent segment moves there; print matches no neighbour and stays. Needs colour.
 #include <vector>
 
 #include "symmetry_segmentation/scene.h"

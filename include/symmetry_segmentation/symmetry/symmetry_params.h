@@ -376,7 +376,7 @@ struct SymmetryParams {
   std::vector<std::string> stages = {"curves",  "curve_pairs", "upright",         "cut",          "refine",
                                      "islands", "footprints",  "cut",             "refine",       "filter",
                                      "island_segments",        "mirror_twins",    "composites",   "nested",
-                                     "color_seams",            "object_size",     "dedup",           "object_bottoms"};
+                                     "color_seams",            "object_size",     "dedup",        "object_bottoms"};
   NormalEdgeCurveParams curves;
   CurvePairParams curve_pairs;
   UprightHypothesisParams upright;
