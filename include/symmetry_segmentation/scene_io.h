@@ -46,8 +46,9 @@ std::shared_ptr<octomap::OcTree> readOctreeData(const std::string& source, const
 PlaneCoefficients loadPlaneFile(const std::string& path);
 std::vector<int> loadLabelsFile(const std::string& path, std::size_t expected_count);
 
-/// Writes `scene` in the layout above (binary PLY with normals and colour, occupancy.bt,
-/// table_plane.txt, labels.txt, scene_info.yaml), creating the directory.
+/// Writes `scene` in the layout above (binary PLY with normals and colour - or, for an
+/// organized cloud, compressed PCD keeping its layout, with normals only if it has them -
+/// occupancy.bt, table_plane.txt, labels.txt, scene_info.yaml), creating the directory.
 void saveScene(const Scene& scene, const std::string& directory);
 
 }  // namespace symmetry_segmentation

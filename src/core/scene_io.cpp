@@ -9,6 +9,8 @@
 
 #include <boost/filesystem.hpp>
 #include <octomap/OcTree.h>
+#include <pcl/common/io.h>
+#include <pcl/io/pcd_io.h>
 #include <pcl/io/ply_io.h>
 #include <yaml-cpp/yaml.h>
 
@@ -107,13 +109,32 @@ void saveScene(const Scene& scene, const std::string& directory) {
   if (ec) throw InputError(directory, "cannot create directory: " + ec.message());
   const fs::path dir(directory);
 
-  Cloud cloud = *scene.cloud;
-  if (!scene.sensor_origins.empty()) {
-    cloud.sensor_origin_ = Eigen::Vector4f(scene.sensor_origins[0].x(), scene.sensor_origins[0].y(),
-                                           scene.sensor_origins[0].z(), 0.0f);
+  Eigen::Vector4f origin = Eigen::Vector4f::Zero();
+  if (!scene.sensor_origins.empty()) origin.head<3>() = scene.sensor_origins[0];
+  // A cloud file of the other format left from an earlier scene would be read instead.
+  for (const char* name : {"cloud.ply", "cloud.pcd"}) fs::remove(dir / name, ec);
+  if (scene.cloud->isOrganized()) {
+    // An organized frame keeps its pixel layout (and NaN holes) in PCD; like a camera's cloud
+    // it has no normals unless the scene has them.
+    const std::string cloud_path = (dir / "cloud.pcd").string();
+    int status = 0;
+    if (scene.has_normals) {
+      Cloud cloud = *scene.cloud;
+      cloud.sensor_origin_ = origin;
+      status = pcl::io::savePCDFileBinaryCompressed(cloud_path, cloud);
+    } else {
+      pcl::PointCloud<pcl::PointXYZRGB> cloud;
+      pcl::copyPointCloud(*scene.cloud, cloud);
+      cloud.sensor_origin_ = origin;
+      status = pcl::io::savePCDFileBinaryCompressed(cloud_path, cloud);
+    }
+    if (status != 0) throw InputError(cloud_path, "cannot write cloud");
+  } else {
+    Cloud cloud = *scene.cloud;
+    cloud.sensor_origin_ = origin;
+    const std::string cloud_path = (dir / "cloud.ply").string();
+    if (pcl::io::savePLYFileBinary(cloud_path, cloud) != 0) throw InputError(cloud_path, "cannot write cloud");
   }
-  const std::string cloud_path = (dir / "cloud.ply").string();
-  if (pcl::io::savePLYFileBinary(cloud_path, cloud) != 0) throw InputError(cloud_path, "cannot write cloud");
 
   if (scene.occupancy) {
     const std::string map_path = (dir / "occupancy.bt").string();

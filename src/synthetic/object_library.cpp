@@ -108,6 +108,26 @@ SyntheticObject makeUShape(double length, double width, double thickness, double
   return object;
 }
 
+SyntheticObject makeBall(double radius) {
+  SyntheticObject object = startObject(ObjectShape::Ball);
+  addPatch(object, SphereZone{Eigen::Vector3d(0.0, 0.0, radius), radius, 0.0, 2.0 * radius, true});
+  return object;
+}
+
+SyntheticObject makePot(double bottom_radius, double top_radius, double height) {
+  SyntheticObject object = startObject(ObjectShape::Pot);
+  addPatch(object, FrustumSide{0.0, height, bottom_radius, top_radius});
+  addPatch(object, Annulus{height, 0.0, top_radius, true});
+  addPatch(object, Annulus{0.0, 0.0, bottom_radius, false});
+  return object;
+}
+
+SyntheticObject makeBook(double length, double width, double thickness) {
+  SyntheticObject object = makeBox(length, width, thickness);
+  object.shape = ObjectShape::Book;
+  return object;
+}
+
 SyntheticObject makeTable(double size_x, double size_y, double thickness) {
   SyntheticObject object = startObject(ObjectShape::Table);
   addPatch(object, boxBetween(-size_x / 2, -size_y / 2, -thickness, size_x / 2, size_y / 2, 0.0));
@@ -166,6 +186,16 @@ SyntheticObject makeRandomObject(ObjectShape shape, Random& random) {
       return makeUShape(length, random.uniform(0.06, 0.12), random.uniform(0.025, 0.04),
                         random.uniform(0.08, 0.16));
     }
+    case ObjectShape::Ball: return makeBall(random.uniform(0.03, 0.07));
+    case ObjectShape::Pot: {
+      const double bottom = random.uniform(0.03, 0.055);
+      return makePot(bottom, bottom * random.uniform(1.15, 1.45), random.uniform(0.06, 0.14));
+    }
+    case ObjectShape::Book: {
+      // Lying flat: books, boards, boxes of tea - thin enough to look like a bump on the table.
+      const double length = random.uniform(0.14, 0.3);
+      return makeBook(length, length * random.uniform(0.55, 0.85), random.uniform(0.012, 0.045));
+    }
     case ObjectShape::Table: break;
   }
   return makeRandomBox(random, 0.06, 0.22);
@@ -175,6 +205,15 @@ const std::vector<ObjectShape>& objectShapes() {
   static const std::vector<ObjectShape> shapes = {
       ObjectShape::Box,  ObjectShape::Cylinder, ObjectShape::Bottle, ObjectShape::Bowl,
       ObjectShape::Mug,  ObjectShape::Cone,     ObjectShape::LShape, ObjectShape::UShape};
+  return shapes;
+}
+
+const std::vector<ObjectShape>& moreObjectShapes() {
+  static const std::vector<ObjectShape> shapes = [] {
+    std::vector<ObjectShape> all = objectShapes();
+    all.insert(all.end(), {ObjectShape::Ball, ObjectShape::Pot});
+    return all;
+  }();
   return shapes;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "symmetry_segmentation/synthetic/object_library.h"
 #include "symmetry_segmentation/synthetic/table_placement.h"
@@ -13,6 +14,7 @@ namespace {
 /// Accumulates objects and stacking facts while a layout is built.
 struct LayoutBuilder {
   SceneLayout layout;
+  const std::vector<ObjectShape>* shapes = &objectShapes();  ///< Pool drawShapes draws from.
 
   int add(SyntheticObject object) {
     object.label = static_cast<int>(layout.world.objects.size()) + 1;
@@ -41,8 +43,8 @@ TableRegion region(double half_x, double half_y) {
 }
 
 /// `count` shapes, cycling through a shuffled list so mixes stay varied.
-std::vector<ObjectShape> drawShapes(int count, Random& random) {
-  std::vector<ObjectShape> pool = objectShapes();
+std::vector<ObjectShape> drawShapes(int count, Random& random, const std::vector<ObjectShape>& from) {
+  std::vector<ObjectShape> pool = from;
   std::vector<ObjectShape> shapes;
   while (static_cast<int>(shapes.size()) < count) {
     for (std::size_t i = pool.size(); i > 1; --i) {
@@ -56,7 +58,7 @@ std::vector<ObjectShape> drawShapes(int count, Random& random) {
 }
 
 void layoutIsolated(LayoutBuilder& builder, TablePlacer& placer, Random& random) {
-  for (ObjectShape shape : drawShapes(random.uniformInt(3, 5), random)) {
+  for (ObjectShape shape : drawShapes(random.uniformInt(3, 5), random, *builder.shapes)) {
     SyntheticObject object = makeRandomObject(shape, random);
     placer.place(object, 0.1);
     builder.add(object);
@@ -140,7 +142,7 @@ void layoutStacked(LayoutBuilder& builder, TablePlacer& placer, Random& random) 
   builder.layout.stacked.emplace_back(builder.add(second_stack[1]), base_label);
 
   // One object standing alone for contrast.
-  SyntheticObject single = makeRandomObject(drawShapes(1, random).front(), random);
+  SyntheticObject single = makeRandomObject(drawShapes(1, random, *builder.shapes).front(), random);
   placer.place(single, 0.08);
   builder.add(single);
 }
@@ -166,7 +168,7 @@ void layoutOccluded(LayoutBuilder& builder, TablePlacer& placer, Random& random)
   builder.layout.occluder_label = builder.add(occluder);
 
   // Two unrelated objects beside them.
-  for (ObjectShape shape : drawShapes(2, random)) {
+  for (ObjectShape shape : drawShapes(2, random, *builder.shapes)) {
     SyntheticObject object = makeRandomObject(shape, random);
     placer.place(object, 0.08);
     builder.add(object);
@@ -184,10 +186,25 @@ void layoutNonConvex(LayoutBuilder& builder, TablePlacer& placer, Random& random
 }
 
 void layoutClutter(LayoutBuilder& builder, TablePlacer& placer, Random& random) {
-  for (ObjectShape shape : drawShapes(random.uniformInt(8, 12), random)) {
+  for (ObjectShape shape : drawShapes(random.uniformInt(8, 12), random, *builder.shapes)) {
     SyntheticObject object = makeRandomObject(shape, random);
     placer.place(object, random.uniform(0.005, 0.025));
     builder.add(object);
+  }
+}
+
+/// Books and boards lying flat among the objects, where they fit; on a crowded table there
+/// may be fewer than drawn.
+void addBooks(LayoutBuilder& builder, TablePlacer& placer, int max_books, Random& random) {
+  const int count = random.uniformInt(0, max_books);
+  for (int i = 0; i < count; ++i) {
+    SyntheticObject book = makeRandomObject(ObjectShape::Book, random);
+    try {
+      placer.place(book, random.uniform(0.01, 0.05));
+    } catch (const std::runtime_error&) {
+      continue;
+    }
+    builder.add(book);
   }
 }
 
@@ -208,42 +225,40 @@ Eigen::Vector3d layoutFocus(const SceneLayout& layout) {
 
 }  // namespace
 
-SceneLayout layoutScene(SceneKind kind, Random& random, const TableSize& table) {
+RealismOptions RealismOptions::realistic() {
+  RealismOptions options;
+  options.room = true;
+  options.printed_share = 0.5;
+  options.max_books = 2;
+  options.more_shapes = true;
+  options.shading = true;
+  return options;
+}
+
+SceneLayout layoutScene(SceneKind kind, Random& random, const TableSize& table, const RealismOptions& realism) {
   LayoutBuilder builder;
+  if (realism.more_shapes) builder.shapes = &moreObjectShapes();
   builder.layout.world.table = makeTable(table.size_x, table.size_y, table.thickness);
   const TableRegion limit = tableLimit(table);
+  TableRegion start = region(0.28, 0.18);
   switch (kind) {
-    case SceneKind::Isolated: {
-      TablePlacer placer(region(0.4, 0.25), limit, random);
-      layoutIsolated(builder, placer, random);
-      break;
-    }
-    case SceneKind::Touching: {
-      TablePlacer placer(region(0.38, 0.24), limit, random);
-      layoutTouching(builder, placer, random);
-      break;
-    }
-    case SceneKind::Stacked: {
-      TablePlacer placer(region(0.35, 0.22), limit, random);
-      layoutStacked(builder, placer, random);
-      break;
-    }
-    case SceneKind::Occluded: {
-      TablePlacer placer(region(0.4, 0.25), limit, random);
-      layoutOccluded(builder, placer, random);
-      break;
-    }
-    case SceneKind::NonConvex: {
-      TablePlacer placer(region(0.35, 0.22), limit, random);
-      layoutNonConvex(builder, placer, random);
-      break;
-    }
-    case SceneKind::Clutter: {
-      TablePlacer placer(region(0.28, 0.18), limit, random);
-      layoutClutter(builder, placer, random);
-      break;
-    }
+    case SceneKind::Isolated: start = region(0.4, 0.25); break;
+    case SceneKind::Touching: start = region(0.38, 0.24); break;
+    case SceneKind::Stacked: start = region(0.35, 0.22); break;
+    case SceneKind::Occluded: start = region(0.4, 0.25); break;
+    case SceneKind::NonConvex: start = region(0.35, 0.22); break;
+    case SceneKind::Clutter: start = region(0.28, 0.18); break;
   }
+  TablePlacer placer(start, limit, random);
+  switch (kind) {
+    case SceneKind::Isolated: layoutIsolated(builder, placer, random); break;
+    case SceneKind::Touching: layoutTouching(builder, placer, random); break;
+    case SceneKind::Stacked: layoutStacked(builder, placer, random); break;
+    case SceneKind::Occluded: layoutOccluded(builder, placer, random); break;
+    case SceneKind::NonConvex: layoutNonConvex(builder, placer, random); break;
+    case SceneKind::Clutter: layoutClutter(builder, placer, random); break;
+  }
+  if (realism.max_books > 0) addBooks(builder, placer, realism.max_books, random);
   builder.layout.focus = layoutFocus(builder.layout);
   if (kind == SceneKind::Occluded) {
     // Centre the camera arc on the occluded object, which the occluder is designed around.

@@ -42,6 +42,9 @@ std::string toString(ObjectShape shape) {
     case ObjectShape::Cone: return "cone";
     case ObjectShape::LShape: return "l_shape";
     case ObjectShape::UShape: return "u_shape";
+    case ObjectShape::Ball: return "ball";
+    case ObjectShape::Pot: return "pot";
+    case ObjectShape::Book: return "book";
   }
   return "unknown";
 }
@@ -66,6 +69,24 @@ Footprint SyntheticObject::worldFootprint() const {
   const Eigen::Matrix3d rotation = pose.linear();
   const double yaw = std::atan2(rotation(1, 0), rotation(0, 0));
   return placeFootprint(footprint, pose.translation().head<2>(), yaw);
+}
+
+Rgb surfaceColor(const SyntheticObject& object, const Eigen::Vector3d& world_point) {
+  if (!object.print.enabled || object.print.block <= 0.0) return object.color;
+  const Eigen::Vector3d local = object.pose.inverse() * world_point;
+  // Hash the block's integer coordinates with the print's seed (splitmix64 finaliser).
+  uint64_t h = object.print.seed;
+  for (int i = 0; i < 3; ++i) {
+    const auto cell = static_cast<int64_t>(std::floor(local[i] / object.print.block));
+    h ^= static_cast<uint64_t>(cell) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+    h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    h = (h ^ (h >> 27)) * 0x94d049bb133111ebULL;
+    h ^= h >> 31;
+  }
+  const double draw = static_cast<double>(h >> 11) * (1.0 / 9007199254740992.0);
+  if (draw >= object.print.ink_share) return object.color;
+  const auto ink = static_cast<std::size_t>(draw / object.print.ink_share * object.print.inks.size());
+  return object.print.inks[std::min(ink, object.print.inks.size() - 1)];
 }
 
 Eigen::Isometry3d uprightPose(double x, double y, double z, double yaw) {

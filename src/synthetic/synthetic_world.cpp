@@ -13,7 +13,7 @@ void keepNearer(const SyntheticObject& object, const Ray& ray, double t_min, std
   result.point = hit->point;
   result.normal = hit->normal;
   result.label = object.label;
-  result.color = object.color;
+  result.color = surfaceColor(object, hit->point);
   best = result;
   t_max = hit->t;
 }
@@ -24,6 +24,7 @@ std::optional<WorldHit> rayIntersect(const SyntheticWorld& world, const Ray& ray
   std::optional<WorldHit> best;
   for (const auto& object : world.objects) keepNearer(object, ray, t_min, best, t_max);
   if (world.table) keepNearer(*world.table, ray, t_min, best, t_max);
+  for (const auto& object : world.background) keepNearer(object, ray, t_min, best, t_max);
   return best;
 }
 

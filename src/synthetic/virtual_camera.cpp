@@ -30,6 +30,17 @@ RenderedView render(const SyntheticWorld& world, const CameraPose& pose, const C
             std::clamp((cos_start - cos_incidence) / (cos_start - cos_full), 0.0, 1.0);
         if (drop_draw < drop_probability) continue;
         depth += depth_noise;
+        if (noise.disparity_focal_baseline > 0.0 && noise.disparity_step > 0.0 && depth > 0.0) {
+          const double steps = std::round(noise.disparity_focal_baseline / depth / noise.disparity_step);
+          if (steps < 1.0) continue;  // beyond the last disparity step: no depth
+          depth = noise.disparity_focal_baseline / (steps * noise.disparity_step);
+        }
+        if (noise.projector_baseline > 0.0) {
+          const Eigen::Vector3d projector =
+              pose.camera_to_world * Eigen::Vector3d(noise.projector_baseline, 0.0, 0.0);
+          const Ray light{projector, hit->point - projector};
+          if (rayIntersect(world, light, 1e-6, 1.0 - 1e-5)) continue;  // in the projector's shadow
+        }
       }
       ViewPoint point;
       point.position = ray.at(depth).cast<float>();
@@ -37,6 +48,7 @@ RenderedView render(const SyntheticWorld& world, const CameraPose& pose, const C
       point.normal = hit->normal.cast<float>();
       point.label = hit->label;
       point.color = hit->color;
+      point.pixel = v * intrinsics.width + u;
       view.points.push_back(point);
     }
   }

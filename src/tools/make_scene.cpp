@@ -1,5 +1,6 @@
 // make_scene: writes a deterministic synthetic tabletop scene with ground truth.
 //   make_scene --kind <kind> --seed N --output DIR [--views N] [--fusion-voxel M] [--image-scale K]
+//              [--realistic] [--single-view kinect|realsense]
 // Exit codes: 0 written, 1 generation or writing failed, 2 bad arguments.
 
 #include <cerrno>
@@ -26,14 +27,20 @@ constexpr int kExitUsage = 2;
 
 const char* const kUsage =
     "usage: make_scene --kind <kind> --seed N --output DIR [--views N] [--fusion-voxel M]\n"
-    "                  [--image-scale K]\n"
+    "                  [--image-scale K] [--realistic] [--single-view SENSOR]\n"
     "       make_scene --list-kinds | --help\n"
     "Writes a synthetic tabletop scene (cloud.ply, occupancy.bt, table_plane.txt, labels.txt,\n"
     "scene_info.yaml) seen by a virtual depth camera from N poses (default 4) on a 60 degree arc.\n"
     "The same kind and seed always give identical files.\n"
     "  --fusion-voxel M   voxel size (m) the views are fused with, 0.0005..0.05 (default 0.003);\n"
     "                     smaller gives more points\n"
-    "  --image-scale K    camera resolution 640K x 480K, K in 1..6 (default 1), same field of view\n";
+    "  --image-scale K    camera resolution 640K x 480K, K in 1..6 (default 1), same field of view\n"
+    "  --realistic        what real scenes have: a wall (sometimes a shelf) behind the table, the\n"
+    "                     floor and clutter on it (all label 0), printed objects, books lying flat,\n"
+    "                     balls and pots, shading\n"
+    "  --single-view S    one organized frame of depth sensor S (kinect, realsense) in the camera's\n"
+    "                     optical frame, as a single RGB-D camera gives it: cloud.pcd with NaN\n"
+    "                     holes, no normals, no OctoMap, no table plane; labels per pixel\n";
 
 struct Arguments {
   std::string kind;
@@ -42,6 +49,8 @@ struct Arguments {
   int views = 4;
   double fusion_voxel = 0.003;
   int image_scale = 1;
+  bool realistic = false;
+  std::string single_view;  ///< Depth sensor name; empty = fused multi-view scene.
   bool help = false;
   bool list_kinds = false;
 };
@@ -81,8 +90,12 @@ Arguments parseArguments(int argc, char** argv) {
       args.list_kinds = true;
       continue;
     }
+    if (flag == "--realistic") {
+      args.realistic = true;
+      continue;
+    }
     if (flag != "--kind" && flag != "--seed" && flag != "--output" && flag != "--views" && flag != "--fusion-voxel" &&
-        flag != "--image-scale") {
+        flag != "--image-scale" && flag != "--single-view") {
       throw InputError("unknown argument '" + flag + "'");
     }
     if (!seen.insert(flag).second) throw InputError(flag + " given twice");
@@ -90,6 +103,8 @@ Arguments parseArguments(int argc, char** argv) {
     const std::string value = argv[++i];
     if (flag == "--kind") {
       args.kind = value;
+    } else if (flag == "--single-view") {
+      args.single_view = value;
     } else if (flag == "--output") {
       if (value.empty()) throw InputError("--output needs a directory");
       args.output = value;
@@ -112,6 +127,9 @@ Arguments parseArguments(int argc, char** argv) {
       if (!views || *views < 1) throw InputError("--views must be an integer in 1..16, got '" + value + "'");
       args.views = static_cast<int>(*views);
     }
+  }
+  if (!args.single_view.empty() && (seen.count("--views") || seen.count("--fusion-voxel"))) {
+    throw InputError("--single-view is one unfused frame: --views and --fusion-voxel do not apply");
   }
   return args;
 }
@@ -138,6 +156,8 @@ int main(int argc, char** argv) {
     options.seed = *args.seed;
     options.num_views = args.views;
     options.voxel_size = args.fusion_voxel;
+    if (args.realistic) options.realism = synthetic::RealismOptions::realistic();
+    if (!args.single_view.empty()) synthetic::useDepthSensor(options, args.single_view);
     // Same field of view at K times the resolution.
     const int k = args.image_scale;
     options.intrinsics.width *= k;
@@ -146,6 +166,7 @@ int main(int argc, char** argv) {
     options.intrinsics.fy *= k;
     options.intrinsics.cx = 0.5 * (options.intrinsics.width - 1);
     options.intrinsics.cy = 0.5 * (options.intrinsics.height - 1);
+    options.noise.disparity_focal_baseline *= k;  // disparity in pixels of the finer image
     synthetic::validate(options);
   } catch (const std::exception& e) {
     std::cerr << "make_scene: " << e.what() << " (try --help)\n";

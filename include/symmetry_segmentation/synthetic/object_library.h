@@ -43,6 +43,13 @@ SyntheticObject makeLShape(double length, double width, double thickness, double
 /// Plate with uprights at both ends.
 SyntheticObject makeUShape(double length, double width, double thickness, double height);
 
+/// Ball of `radius` resting on the table.
+SyntheticObject makeBall(double radius);
+/// Closed tapered pot (flower pot, yoghurt tub): a frustum with a lid.
+SyntheticObject makePot(double bottom_radius, double top_radius, double height);
+/// A box lying flat (book, board): length x width, `thickness` high; shape Book.
+SyntheticObject makeBook(double length, double width, double thickness);
+
 /// Thick table top of size_x x size_y whose top face is z = 0 (label 0).
 SyntheticObject makeTable(double size_x, double size_y, double thickness);
 
@@ -51,8 +58,11 @@ SyntheticObject makeRandomObject(ObjectShape shape, Random& random);
 /// A random box in the given ranges.
 SyntheticObject makeRandomBox(Random& random, double min_size, double max_size);
 
-/// Every object shape (not the table), for drawing mixed sets.
+/// The shapes of the fixed generated set (not the table), for drawing mixed sets.
 const std::vector<ObjectShape>& objectShapes();
+/// objectShapes() plus the shapes the realistic scenes add (ball, pot); books are laid
+/// separately, flat on the table.
+const std::vector<ObjectShape>& moreObjectShapes();
 
 /// A distinct, plausible colour for the object with this label.
 Rgb colorForLabel(int label);

@@ -4,6 +4,7 @@
 // with normals plus an OctoMap. Same options => bit-identical scene.
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "symmetry_segmentation/scene.h"
@@ -30,6 +31,12 @@ struct GeneratorOptions {
   bool build_occupancy = true;
   CameraIntrinsics intrinsics;
   DepthNoiseModel noise;
+  RealismOptions realism;  ///< Room, prints, books, more shapes, shading (default: none).
+  /// One organized frame as a single RGB-D camera gives it (see useDepthSensor): in the
+  /// camera's optical frame, no normals, no OctoMap, no table plane, NaN where there is no
+  /// depth; labels per pixel. The camera stands in front of the table at a random distance,
+  /// elevation and azimuth (+-25 deg).
+  bool single_view = false;
 };
 
 struct GeneratedScene {
@@ -40,6 +47,13 @@ struct GeneratedScene {
 
 /// Throws InputError naming the first bad option.
 void validate(const GeneratorOptions& options);
+
+/// Sets up a single organized view from a depth sensor model: "kinect" (structured light,
+/// 1/8 px disparity steps, projector shadows) or "realsense" (D435-like active stereo
+/// registered to the colour camera: wider noise, 1/16 px steps). Throws InputError otherwise.
+void useDepthSensor(GeneratorOptions& options, const std::string& sensor);
+/// "kinect", "realsense".
+const std::vector<std::string>& depthSensorNames();
 
 /// Camera poses on the arc in front of (-y side of) `focus`, drawn from `random`.
 std::vector<CameraPose> cameraArc(const GeneratorOptions& options, const Eigen::Vector3d& focus, Random& random);

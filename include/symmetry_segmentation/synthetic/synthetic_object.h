@@ -17,11 +17,22 @@
 namespace symmetry_segmentation {
 namespace synthetic {
 
-enum class ObjectShape { Table, Box, Cylinder, Bottle, Bowl, Mug, Cone, LShape, UShape };
+enum class ObjectShape { Table, Box, Cylinder, Bottle, Bowl, Mug, Cone, LShape, UShape, Ball, Pot, Book };
 
 std::string toString(ObjectShape shape);
 
 using Rgb = std::array<uint8_t, 3>;
+
+/// A printed surface (packaging, labels): rectangular blocks of a few inks over the base
+/// colour, fixed to the object so every view sees the same print. Real objects are rarely one
+/// flat colour, and a segmenter that cuts at colour changes must not cut them apart.
+struct Print {
+  bool enabled = false;
+  double block = 0.03;          ///< Edge of the print's blocks (m), local frame.
+  double ink_share = 0.5;       ///< Fraction of blocks in an ink rather than the base colour.
+  std::array<Rgb, 3> inks{};
+  uint64_t seed = 0;            ///< Which blocks get which ink.
+};
 
 struct SyntheticObject {
   ObjectShape shape = ObjectShape::Box;
@@ -32,6 +43,7 @@ struct SyntheticObject {
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  ///< Local to world.
   int label = 0;         ///< 0 = table / background, 1..N objects.
   Rgb color{{128, 128, 128}};
+  Print print;
 
   double height() const { return local_max.z(); }
   /// Base position (z of the local origin) and heading in the world.
@@ -47,6 +59,9 @@ void addPatch(SyntheticObject& object, const SurfacePatch& patch);
 
 /// Pose for an object standing upright at (x, y, z) turned by yaw about the vertical.
 Eigen::Isometry3d uprightPose(double x, double y, double z, double yaw);
+
+/// Colour of the object's surface at a world point on it: the base colour or the print's ink.
+Rgb surfaceColor(const SyntheticObject& object, const Eigen::Vector3d& world_point);
 
 struct ObjectHit {
   double t = 0.0;

@@ -12,6 +12,8 @@ namespace synthetic {
 struct SyntheticWorld {
   std::optional<SyntheticObject> table;
   std::vector<SyntheticObject> objects;  ///< objects[i].label == i + 1 in generated worlds.
+  /// Not on the table, not objects (label 0): walls, shelves, floor, clutter on the floor.
+  std::vector<SyntheticObject> background;
 };
 
 struct WorldHit {

@@ -28,6 +28,14 @@ struct DepthNoiseModel {
   double grazing_full_deg = 86.0;          ///< ...and where every pixel is lost.
   double min_depth = 0.4;
   double max_depth = 4.0;
+  /// Structured light and active stereo measure disparity, not depth: with focal length x
+  /// baseline (pixel metres) above 0, depth is rounded to the nearest disparity step, so
+  /// steps grow with the square of the depth (Kinect: 577 px x 7.5 cm, 1/8 px).
+  double disparity_focal_baseline = 0.0;
+  double disparity_step = 0.125;  ///< Pixels.
+  /// Projector (or second imager) this far along the camera's +x (m): surfaces it cannot
+  /// see give no depth - the shadow beside every object's edge. 0 = none.
+  double projector_baseline = 0.0;
 };
 
 /// Camera-to-world pose in the optical convention (x right, y down, z forward).
@@ -45,6 +53,7 @@ struct ViewPoint {
   Eigen::Vector3f normal;  ///< True normal of the surface hit (unit, toward free space).
   int label = 0;
   Rgb color{{0, 0, 0}};
+  int pixel = -1;  ///< Row-major index v * width + u.
 };
 
 struct RenderedView {
