@@ -70,9 +70,10 @@ float adaptiveTableMargin(const std::vector<float>& distances, const PreprocessP
 /// Estimates the supporting plane of `cloud` with RANSAC; returns false if none is found. Of up to
 /// three large planes (a single view may show more wall or floor than table), the one with the
 /// most other points standing over it within 0.3 m, on the `viewpoint` side (without one: on
-/// the side most points are on).
+/// the side most points are on). `single_view`: the cloud was seen from `viewpoint` alone.
 bool estimateSupportingPlane(const Cloud& cloud, const PreprocessParams& params,
-                             const std::optional<Eigen::Vector3f>& viewpoint, PlaneCoefficients& plane);
+                             const std::optional<Eigen::Vector3f>& viewpoint, PlaneCoefficients& plane,
+                             bool single_view = false);
 
 /// The supporting surface as methods report it (plane and, when cropped to it, its polygon).
 std::optional<SupportSurface> supportSurface(const PreprocessedScene& scene);

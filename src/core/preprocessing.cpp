@@ -161,7 +161,7 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
       // The sensor is known from the scene's origins or the cloud's own viewpoint (a PCD's VIEWPOINT).
       std::optional<Eigen::Vector3f> sensor;
       if (!scene.sensor_origins.empty()) sensor = out.viewpoint;
-      found = estimateSupportingPlane(*coarse, params, sensor, plane);
+      found = estimateSupportingPlane(*coarse, params, sensor, plane, scene.sensor_origins.size() == 1);
     }
     if (found) {
       out.has_table = true;

@@ -143,7 +143,7 @@ struct Support {
 /// under the plane's own points on the other side: nothing is seen through or under a table
 /// top, while a plane through an object's face has the rest of the scene on both sides.
 Support supportOf(const CandidatePlane& candidate, const std::vector<CandidatePlane>& all, const Cloud& cloud,
-                  const std::optional<Eigen::Vector3f>& viewpoint, float on_plane_distance) {
+                  const std::optional<Eigen::Vector3f>& viewpoint, float on_plane_distance, bool single_view) {
   std::vector<const PointT*> off_planes;
   float majority = 0.0f;
   for (const auto& p : cloud.points) {
@@ -172,9 +172,14 @@ Support supportOf(const CandidatePlane& candidate, const std::vector<CandidatePl
     if (height <= 0.0f || height > kMaxObjectHeight) continue;
     if (overPlanePoints(*p, height)) ++support.standing;
   }
-  for (const auto& p : cloud.points) {
-    const float height = distanceTo(up, p);
-    if (height < -on_plane_distance && overPlanePoints(p, height)) ++support.under;
+  // One sensor above a plane never sees under its points, only past its edges; there the
+  // footprint test counts what stands beside the table below it (the floor, a chair, the foot
+  // of the wall, whose strip crossing the plane counts as the plane's points) and says nothing.
+  if (!single_view) {
+    for (const auto& p : cloud.points) {
+      const float height = distanceTo(up, p);
+      if (height < -on_plane_distance && overPlanePoints(p, height)) ++support.under;
+    }
   }
   // A fused cloud's normals point out of the surfaces: a table's point up, toward what stands
   // on it; the far face of a box, seen from another side, points away.
@@ -192,7 +197,8 @@ Support supportOf(const CandidatePlane& candidate, const std::vector<CandidatePl
 }  // namespace
 
 bool estimateSupportingPlane(const Cloud& cloud, const PreprocessParams& params,
-                             const std::optional<Eigen::Vector3f>& viewpoint, PlaneCoefficients& plane) {
+                             const std::optional<Eigen::Vector3f>& viewpoint, PlaneCoefficients& plane,
+                             bool single_view) {
   if (cloud.size() < 3) return false;
   // A "table" holding under a tenth of the scene is more likely an object face.
   const std::size_t min_inliers = std::max<std::size_t>(50, cloud.size() / 10);
@@ -221,7 +227,7 @@ bool estimateSupportingPlane(const Cloud& cloud, const PreprocessParams& params,
   // qualifies, all compete.
   std::vector<Support> supports;
   for (const CandidatePlane& candidate : candidates) {
-    supports.push_back(supportOf(candidate, candidates, cloud, viewpoint, kOnPlaneFactor * params.ransac_distance));
+    supports.push_back(supportOf(candidate, candidates, cloud, viewpoint, kOnPlaneFactor * params.ransac_distance, single_view));
   }
   auto supportsThings = [&](std::size_t k) {
     return !supports[k].faces_down &&
