@@ -5,6 +5,7 @@
 #include <set>
 
 #include <algorithm>
+#include <cmath>
 
 #include <boost/filesystem.hpp>
 
@@ -55,6 +56,9 @@ TEST(MakeSceneTool, BadArgumentsExitWithCodeTwo) {
   expectUsageError("--kind clutter --seed 1 --image-scale 7 --output " + dir, "--image-scale");
   expectUsageError("--kind clutter --seed 1 --output", "--output needs a value");
   expectUsageError("--kind clutter --seed 1 --colour red --output " + dir, "unknown argument '--colour'");
+  expectUsageError("--kind clutter --seed 1 --single-view lidar --output " + dir, "unknown depth sensor 'lidar'");
+  expectUsageError("--kind clutter --seed 1 --single-view kinect --views 2 --output " + dir, "--single-view");
+  expectUsageError("--kind clutter --seed 1 --single-view --output " + dir, "unknown argument");
   EXPECT_TRUE(boost::filesystem::is_empty(dir)) << "nothing is written on bad arguments";
 }
 
@@ -97,4 +101,28 @@ TEST(MakeSceneTool, FusionVoxelAndImageScaleSetTheDensity) {
   std::set<int> coarse_labels(coarse.labels.begin(), coarse.labels.end());
   std::set<int> fine_labels(fine.labels.begin(), fine.labels.end());
   EXPECT_EQ(coarse_labels, fine_labels) << "same objects";
+}
+
+// --realistic --single-view: one organized frame with the room in it, no map, no table plane.
+TEST(MakeSceneTool, RealisticSingleViewWritesAnOrganizedFrame) {
+  const std::string dir = test_support::makeTempDir("make_scene_single_view");
+  const auto run = runCommand(makeScene("--kind touching --seed 5 --realistic --single-view realsense --output " + dir + "/scene"));
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("1 views"), std::string::npos) << run.output;
+  EXPECT_TRUE(boost::filesystem::exists(dir + "/scene/cloud.pcd"));
+  EXPECT_FALSE(boost::filesystem::exists(dir + "/scene/occupancy.bt"));
+  EXPECT_FALSE(boost::filesystem::exists(dir + "/scene/table_plane.txt"));
+  const ss::Scene scene = ss::loadScene(dir + "/scene");
+  EXPECT_EQ(scene.cloud->width * scene.cloud->height, 640u * 480u);
+  EXPECT_EQ(scene.cloud->height, 480u);
+  EXPECT_EQ(scene.kind, "touching");
+  // Background (label 0) far behind the objects: the wall.
+  float farthest_object = 0.0f, farthest_background = 0.0f;
+  for (std::size_t i = 0; i < scene.size(); ++i) {
+    const float z = scene.cloud->points[i].z;
+    if (!std::isfinite(z)) continue;
+    float& farthest = scene.labels[i] > 0 ? farthest_object : farthest_background;
+    farthest = std::max(farthest, z);
+  }
+  EXPECT_GT(farthest_background, farthest_object + 0.2f);
 }
