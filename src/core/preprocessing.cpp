@@ -161,7 +161,11 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
       // The sensor is known from the scene's origins or the cloud's own viewpoint (a PCD's VIEWPOINT).
       std::optional<Eigen::Vector3f> sensor;
       if (!scene.sensor_origins.empty()) sensor = out.viewpoint;
-      found = estimateSupportingPlane(*coarse, params, sensor, plane, scene.sensor_origins.size() == 1);
+      // One origin alone does not make a single view (a fused cloud may name its last camera):
+      // a camera's frame keeps its pixel grid or comes without normals.
+      const bool single_view =
+          scene.sensor_origins.size() == 1 && (scene.cloud->isOrganized() || !scene.has_normals);
+      found = estimateSupportingPlane(*coarse, params, sensor, plane, single_view);
     }
     if (found) {
       out.has_table = true;
