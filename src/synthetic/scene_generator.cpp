@@ -37,8 +37,11 @@ void shade(std::vector<RenderedView>& views) {
   }
 }
 
-CameraPose singleViewCamera(const GeneratorOptions& options, const Eigen::Vector3d& focus, Random& random) {
-  const double azimuth = (-90.0 + random.uniform(-25.0, 25.0)) * M_PI / 180.0;
+/// A camera looking at `focus` from `azimuth` (degrees, -90 = in front, -y) with elevation
+/// and distance drawn from the options' ranges.
+CameraPose cameraAt(const GeneratorOptions& options, const Eigen::Vector3d& focus, double azimuth_deg,
+                    Random& random) {
+  const double azimuth = azimuth_deg * M_PI / 180.0;
   const double elevation = random.uniform(options.min_elevation_deg, options.max_elevation_deg) * M_PI / 180.0;
   const double distance = random.uniform(options.min_distance, options.max_distance);
   const Eigen::Vector3d eye = focus + distance * Eigen::Vector3d(std::cos(elevation) * std::cos(azimuth),
@@ -141,13 +144,7 @@ std::vector<CameraPose> cameraArc(const GeneratorOptions& options, const Eigen::
   std::vector<CameraPose> cameras;
   for (int i = 0; i < options.num_views; ++i) {
     const double fraction = options.num_views == 1 ? 0.5 : static_cast<double>(i) / (options.num_views - 1);
-    const double azimuth = (-90.0 + options.arc_degrees * (fraction - 0.5)) * M_PI / 180.0;
-    const double elevation = random.uniform(options.min_elevation_deg, options.max_elevation_deg) * M_PI / 180.0;
-    const double distance = random.uniform(options.min_distance, options.max_distance);
-    const Eigen::Vector3d eye =
-        focus + distance * Eigen::Vector3d(std::cos(elevation) * std::cos(azimuth),
-                                           std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
-    cameras.push_back(lookAt(eye, focus));
+    cameras.push_back(cameraAt(options, focus, -90.0 + options.arc_degrees * (fraction - 0.5), random));
   }
   return cameras;
 }
@@ -168,7 +165,7 @@ GeneratedScene generate(const GeneratorOptions& options) {
   }
   Random camera_random(deriveSeed(options.seed, kCameraStream));
   if (options.single_view) {
-    result.cameras = {singleViewCamera(options, result.layout.focus, camera_random)};
+    result.cameras = {cameraAt(options, result.layout.focus, -90.0 + camera_random.uniform(-25.0, 25.0), camera_random)};
   } else {
     result.cameras = cameraArc(options, result.layout.focus, camera_random);
   }

@@ -14,6 +14,7 @@ RenderedView render(const SyntheticWorld& world, const CameraPose& pose, const C
   view.points.reserve(static_cast<std::size_t>(intrinsics.width) * intrinsics.height / 2);
   const double cos_start = std::cos(noise.grazing_start_deg * M_PI / 180.0);
   const double cos_full = std::cos(noise.grazing_full_deg * M_PI / 180.0);
+  const Eigen::Vector3d projector = pose.camera_to_world * Eigen::Vector3d(noise.projector_baseline, 0.0, 0.0);
   for (int v = 0; v < intrinsics.height; ++v) {
     for (int u = 0; u < intrinsics.width; ++u) {
       const Ray ray = pixelRay(pose, intrinsics, u, v);
@@ -36,8 +37,6 @@ RenderedView render(const SyntheticWorld& world, const CameraPose& pose, const C
           depth = noise.disparity_focal_baseline / (steps * noise.disparity_step);
         }
         if (noise.projector_baseline > 0.0) {
-          const Eigen::Vector3d projector =
-              pose.camera_to_world * Eigen::Vector3d(noise.projector_baseline, 0.0, 0.0);
           const Ray light{projector, hit->point - projector};
           if (rayIntersect(world, light, 1e-6, 1.0 - 1e-5)) continue;  // in the projector's shadow
         }

@@ -28,7 +28,6 @@ struct RealismOptions {
   bool shading = false;        ///< Colours darken as surfaces turn from the light.
 
   static RealismOptions realistic();
-  bool any() const { return room || printed_share > 0.0 || max_books > 0 || more_shapes || shading; }
 };
 
 struct SceneLayout {
