@@ -26,6 +26,7 @@ struct PreprocessParams {
   bool crop_to_support = true;
   float support_margin = 0.05f;
   float max_object_height = 0.5f;
+  float background_extent = 0.5f;
 };
 
 inline void describeParameters(ParameterList<PreprocessParams>& list) {
@@ -45,7 +46,10 @@ inline void describeParameters(ParameterList<PreprocessParams>& list) {
       .add("support_margin", &P::support_margin, 0.0, 1.0, "m",
            "the table's polygon grows by this, for objects at its edge whose footprint hides the table there")
       .add("max_object_height", &P::max_object_height, 0.0, 10.0, "m",
-           "points higher than this above the table are not on a tabletop object; 0: no limit");
+           "points higher than this above the table are not on a tabletop object; 0: no limit")
+      .add("background_extent", &P::background_extent, 0.0, 100.0, "m",
+           "a flat patch wider than this that reaches past the table's extent is background (a wall, a shelf "
+           "back, the floor), not an object; 0: keep it");
 }
 
 struct PreprocessedScene {

@@ -11,6 +11,7 @@
 #include <pcl/search/kdtree.h>
 #include <pcl/segmentation/extract_clusters.h>
 
+#include "symmetry_segmentation/background_surfaces.h"
 #include "symmetry_segmentation/errors.h"
 #include "symmetry_segmentation/voxel_grid.h"
 
@@ -107,6 +108,25 @@ std::vector<bool> voxelsOverSupport(const Cloud& coarse, const std::vector<bool>
   return keep;
 }
 
+// Unmarks the kept coarse voxels that lie on a wall, shelf back or floor reaching into the region.
+void removeBackgroundSurfaces(const Cloud& coarse, const PlaneCoefficients& table, const PreprocessParams& params,
+                              float coarse_leaf, std::vector<bool>& keep) {
+  if (!(params.background_extent > 0.0f)) return;
+  std::vector<bool> off_table(coarse.size());
+  for (std::size_t v = 0; v < coarse.size(); ++v) {
+    off_table[v] = std::fabs(table.head<3>().dot(coarse.points[v].getVector3fMap()) + table[3]) > params.ransac_distance;
+  }
+  BackgroundSurfaceParams surfaces;
+  surfaces.ransac_distance = params.ransac_distance;
+  surfaces.ransac_iterations = params.ransac_iterations;
+  surfaces.connect_distance = kTableConnectVoxels * coarse_leaf;
+  surfaces.max_object_extent = params.background_extent;
+  const std::vector<bool> background = backgroundSurfacePoints(coarse, off_table, keep, surfaces);
+  for (std::size_t v = 0; v < coarse.size(); ++v) {
+    if (background[v]) keep[v] = false;
+  }
+}
+
 }  // namespace
 
 float adaptiveTableMargin(const std::vector<float>& distances, const PreprocessParams& params) {
@@ -189,8 +209,9 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
           const float height = out.table_plane.head<3>().dot(coarse->points[v].getVector3fMap()) + out.table_plane[3];
           coarse_above[v] = height > out.table_margin && height <= max_height;
         }
-        const std::vector<bool> keep =
+        std::vector<bool> keep =
             voxelsOverSupport(*coarse, coarse_above, *out.support_polygon, kGroupConnectVoxels * coarse_leaf);
+        removeBackgroundSurfaces(*coarse, out.table_plane, params, coarse_leaf, keep);
         // A voxel straddling the margin is no group's: its points go by the polygon alone.
         input_over_support.assign(input.size(), false);
         for (std::size_t v = 0; v < keep.size(); ++v) {
