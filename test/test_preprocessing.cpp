@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <set>
 
 #include "symmetry_segmentation/errors.h"
@@ -369,4 +371,55 @@ TEST(Preprocessing, AWallJustBehindTheTableIsNotKeptOverIt) {
     for (int i : pre.kept_input_indices) object_kept += generated.scene.labels[i] > 0;
     EXPECT_GT(object_kept, 0.9 * object_points) << syn::toString(kind);
   }
+}
+
+TEST(Preprocessing, KnownGravityPicksTheTableOverAWallThingsHangOn) {
+  // A single view of a pegboard wall with boxes hanging on it, and a small table below with one
+  // box on it. Seen from the camera the wall is the larger plane with more standing in front of
+  // it; only gravity says which plane things rest on.
+  ss::Scene scene;
+  scene.cloud = std::make_shared<ss::Cloud>();
+  ss::Cloud table;
+  test_clouds::addTable(table, 0.2f, 0.01f);
+  for (auto& p : table.points) p.y += 0.25f;  // y in [0.05, 0.45], in front of the wall
+  *scene.cloud += table;
+  test_clouds::addWall(*scene.cloud, 0.5f, 0.6f, 0.02f, 1.0f, 0.01f);
+  for (float x : {-0.45f, -0.15f, 0.15f, 0.45f}) {
+    for (float z : {0.45f, 0.75f}) {
+      // A box hanging on the wall: its front 12 cm in front of it.
+      ss::Cloud box;
+      test_clouds::addBox(box, {x - 0.05f, 0.0f, 0.0f}, {0.1f, 0.12f, 0.12f}, 0.01f);
+      for (auto& p : box.points) {
+        const float depth = p.z;  // the box's "height" becomes its depth out of the wall
+        p.z = z + (p.y - 0.0f);
+        p.y = 0.5f - depth;
+      }
+      *scene.cloud += box;
+    }
+  }
+  test_clouds::addBox(*scene.cloud, {-0.05f, 0.2f, 0.0f}, {0.08f, 0.08f, 0.1f}, 0.01f);
+  scene.has_normals = false;
+  for (auto& p : scene.cloud->points) p.normal_x = p.normal_y = p.normal_z = std::numeric_limits<float>::quiet_NaN();
+  scene.sensor_origins.push_back({0.0f, -0.6f, 0.5f});
+
+  ss::PreprocessParams params;
+  ss::PlaneCoefficients blind;
+  ASSERT_TRUE(ss::estimateSupportingPlane(*scene.cloud, params, scene.sensor_origins.front(), blind, true));
+  EXPECT_GT(std::fabs(blind[1]), 0.9f) << "without gravity the wall wins (else the test means nothing)";
+
+  ss::PlaneCoefficients plane;
+  ASSERT_TRUE(ss::estimateSupportingPlane(*scene.cloud, params, scene.sensor_origins.front(), plane, true,
+                                          Eigen::Vector3f::UnitZ()));
+  EXPECT_GT(std::fabs(plane[2]), 0.99f);
+  EXPECT_NEAR(std::fabs(plane[3]), 0.0f, 0.005f);
+
+  // Through preprocess, from the scene's up: the table, oriented up.
+  scene.up = Eigen::Vector3f::UnitZ();
+  const ss::PreprocessedScene prepared = ss::preprocess(scene, params);
+  ASSERT_TRUE(prepared.has_table);
+  EXPECT_GT(prepared.table_plane[2], 0.99f);
+
+  // Gravity that no plane faces: no support rather than a wrong one.
+  EXPECT_FALSE(ss::estimateSupportingPlane(*scene.cloud, params, scene.sensor_origins.front(), plane, true,
+                                           Eigen::Vector3f(1.0f, 0.0f, 1.0f).normalized()));
 }

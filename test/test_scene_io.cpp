@@ -57,6 +57,7 @@ TEST(SceneIo, SaveAndLoadRoundTrip) {
   scene.has_normals = true;
   scene.kind = "isolated";
   scene.sensor_origins = {{0.1f, 0.2f, 0.9f}, {-0.3f, 0.2f, 0.8f}};
+  scene.up = Eigen::Vector3f(0.0f, -1.0f, 0.0f);
   scene.table_plane = ss::PlaneCoefficients(0, 0, 1, 0.02f);
   scene.labels.assign(scene.cloud->size(), 3);
   scene.labels[0] = 0;
@@ -72,6 +73,8 @@ TEST(SceneIo, SaveAndLoadRoundTrip) {
   EXPECT_EQ(loaded.labels, scene.labels);
   ASSERT_EQ(loaded.sensor_origins.size(), 2u);
   EXPECT_TRUE(loaded.sensor_origins[1].isApprox(scene.sensor_origins[1]));
+  ASSERT_TRUE(loaded.up.has_value());
+  EXPECT_TRUE(loaded.up->isApprox(Eigen::Vector3f(0.0f, -1.0f, 0.0f)));
   ASSERT_TRUE(loaded.table_plane.has_value());
   EXPECT_NEAR((*loaded.table_plane)[3], 0.02f, 1e-6f);
   ASSERT_TRUE(loaded.occupancy);
@@ -79,6 +82,23 @@ TEST(SceneIo, SaveAndLoadRoundTrip) {
   ASSERT_NE(node, nullptr);
   EXPECT_TRUE(loaded.occupancy->isNodeOccupied(node));
   EXPECT_NEAR(loaded.cloud->points[5].normal_z, scene.cloud->points[5].normal_z, 1e-6f);
+}
+
+TEST(SceneIo, UpDirectionIsNormalisedAndBadOnesAreRejected) {
+  const std::string dir = test_support::makeTempDir("scene_io_up");
+  ss::Scene scene;
+  scene.cloud = std::make_shared<ss::Cloud>();
+  test_clouds::addBox(*scene.cloud, {0, 0, 0}, {0.05f, 0.05f, 0.05f}, 0.01f);
+  ss::saveScene(scene, dir);
+  EXPECT_FALSE(ss::loadScene(dir).up.has_value());  // not written when unknown
+  writeTextFile(dir + "/scene_info.yaml", "up: [0, 0, 2]\n");
+  const auto up = ss::loadScene(dir).up;
+  ASSERT_TRUE(up.has_value());
+  EXPECT_NEAR(up->z(), 1.0f, 1e-6f);
+  for (const char* bad : {"up: [0, 0, 0]\n", "up: [0, 1]\n", "up: [0, x, 1]\n", "up: [0, .nan, 1]\n", "up: 1\n"}) {
+    writeTextFile(dir + "/scene_info.yaml", bad);
+    EXPECT_THROW(ss::loadScene(dir), ss::InputError) << bad;
+  }
 }
 
 TEST(SceneIo, PlaneFileIsValidatedAndNormalised) {

@@ -80,11 +80,34 @@ TEST(SegmentSceneCli, SegmentsAHandBuiltScene) {
   EXPECT_GT(result.segments[0].indices.size(), 1000u);
 }
 
+// Gravity given on the command line is used when the table is estimated: the right up finds
+// the box on the table, an up lying in the table's plane leaves no table to take away.
+TEST(SegmentSceneCli, UpDirectionChoosesTheTable) {
+  const std::string dir = test_support::makeTempDir("cli_up");
+  ss::Scene scene = boxScene();
+  scene.table_plane.reset();
+  ss::saveScene(scene, dir + "/scene");
+  auto segmentedPoints = [&](const std::string& up, const std::string& out) {
+    const auto result = segment(dir + "/scene", dir + "/" + out, "--method euclidean --no-png --up " + up);
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    std::size_t points = 0;
+    for (const auto& s : ss::readSegmentsJson(dir + "/" + out + "/segments.json").segments) points += s.indices.size();
+    return points;
+  };
+  const std::size_t upright = segmentedPoints("0,0,1", "upright");
+  const std::size_t sideways = segmentedPoints("1,0,0", "sideways");
+  EXPECT_GT(upright, 1000u);
+  EXPECT_GT(sideways, upright + 2000);  // the table's points are still there
+}
+
 TEST(SegmentSceneCli, CommandLineErrorsExitWithTwo) {
   EXPECT_EQ(runCommand(toolPath("segment_scene")).exit_code, 2);
   EXPECT_EQ(runCommand(toolPath("segment_scene") + " scene").exit_code, 2);  // no --output
   EXPECT_EQ(runCommand(toolPath("segment_scene") + " a --output o --bogus").exit_code, 2);
   EXPECT_EQ(runCommand(toolPath("segment_scene") + " a --output o --set nonsense").exit_code, 2);
+  for (const char* bad_up : {"0,0", "0,0,0", "0,0,1,2", "a,b,c", "0;0;1"}) {
+    EXPECT_EQ(runCommand(toolPath("segment_scene") + " a --output o --up '" + bad_up + "'").exit_code, 2) << bad_up;
+  }
   const auto help = runCommand(toolPath("segment_scene") + " --help");
   EXPECT_EQ(help.exit_code, 0);
   EXPECT_NE(help.output.find("--method"), std::string::npos);

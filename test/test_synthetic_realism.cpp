@@ -205,6 +205,16 @@ TEST(SyntheticRealism, SingleViewSavesAsOrganizedPcdAndLoadsBack) {
   EXPECT_TRUE(loaded.has_color);
   EXPECT_EQ(loaded.labels, scene.labels);
   EXPECT_EQ(loaded.kind, "stacked");
+  // Gravity in the optical frame (x right, y down, z forward) of a camera looking down at the
+  // table from 30-55 deg elevation: up is -y tilted towards the camera, and it is saved.
+  ASSERT_TRUE(scene.up.has_value());
+  const double elevation_deg = std::asin(-scene.up->z()) * 180.0 / M_PI;
+  EXPECT_GE(elevation_deg, 30.0 - 1e-3);
+  EXPECT_LE(elevation_deg, 55.0 + 1e-3);
+  EXPECT_NEAR(scene.up->x(), 0.0, 1e-4);  // no roll
+  EXPECT_LT(scene.up->y(), 0.0);
+  ASSERT_TRUE(loaded.up.has_value());
+  EXPECT_TRUE(loaded.up->isApprox(*scene.up, 1e-5f));
   for (std::size_t i = 0; i < scene.size(); i += 97) {
     const auto& a = scene.cloud->points[i];
     const auto& b = loaded.cloud->points[i];
@@ -217,6 +227,7 @@ TEST(SyntheticRealism, SingleViewSavesAsOrganizedPcdAndLoadsBack) {
   // Saving a fused scene into the same directory replaces the organized cloud.
   ss::saveScene(generateScene(fusedOptions(SceneKind::Stacked, 2, RealismOptions{})), dir);
   EXPECT_FALSE(boost::filesystem::exists(dir + "/cloud.pcd"));
+  EXPECT_FALSE(ss::loadScene(dir).up.has_value()) << "a fused volume's frame is arbitrary";
   EXPECT_FALSE(ss::loadScene(dir).cloud->isOrganized());
 }
 

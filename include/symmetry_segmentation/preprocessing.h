@@ -27,6 +27,7 @@ struct PreprocessParams {
   float support_margin = 0.05f;
   float max_object_height = 0.5f;
   float background_extent = 0.5f;
+  float max_support_tilt = 30.0f;
 };
 
 inline void describeParameters(ParameterList<PreprocessParams>& list) {
@@ -49,7 +50,9 @@ inline void describeParameters(ParameterList<PreprocessParams>& list) {
            "points higher than this above the table are not on a tabletop object; 0: no limit")
       .add("background_extent", &P::background_extent, 0.0, 100.0, "m",
            "a flat patch wider than this that reaches past the table's extent is background (a wall, a shelf "
-           "back, the floor), not an object; 0: keep it");
+           "back, the floor), not an object; 0: keep it")
+      .add("max_support_tilt", &P::max_support_tilt, 0.0, 90.0, "deg",
+           "with gravity known (scene up, node ~up_frame), the supporting plane's normal is within this angle of up");
 }
 
 struct PreprocessedScene {
@@ -75,9 +78,11 @@ float adaptiveTableMargin(const std::vector<float>& distances, const PreprocessP
 /// three large planes (a single view may show more wall or floor than table), the one with the
 /// most other points standing over it within 0.3 m, on the `viewpoint` side (without one: on
 /// the side most points are on). `single_view`: the cloud was seen from `viewpoint` alone.
+/// With `up` (gravity) known only planes within params.max_support_tilt of it are candidates,
+/// and false is returned when there is none.
 bool estimateSupportingPlane(const Cloud& cloud, const PreprocessParams& params,
                              const std::optional<Eigen::Vector3f>& viewpoint, PlaneCoefficients& plane,
-                             bool single_view = false);
+                             bool single_view = false, const std::optional<Eigen::Vector3f>& up = std::nullopt);
 
 /// The supporting surface as methods report it (plane and, when cropped to it, its polygon).
 std::optional<SupportSurface> supportSurface(const PreprocessedScene& scene);

@@ -36,6 +36,9 @@ struct Scene {
   std::vector<Eigen::Vector3f> sensor_origins;
   std::shared_ptr<octomap::OcTree> occupancy;  ///< May be null: no map on disk.
   std::optional<PlaneCoefficients> table_plane;
+  /// Gravity's up in the cloud's frame, when known (tf, an IMU, `--up`): the supporting plane
+  /// is then one facing up, never a wall or a tilted box face. Unit length.
+  std::optional<Eigen::Vector3f> up;
   /// Only points inside this box (cloud frame) are segmented. The table is still found in the
   /// whole cloud: a box drawn around objects need not hold the table they stand on.
   std::optional<Eigen::AlignedBox3f> region_of_interest;

@@ -4,7 +4,8 @@
 //   scene/occupancy.bt | .ot       optional OctoMap in the cloud's frame
 //   scene/table_plane.txt          optional "a b c d"
 //   scene/labels.txt               optional ground truth, one integer per point
-//   scene/scene_info.yaml          optional: kind, seed, sensor origins (written by make_scene)
+//   scene/scene_info.yaml          optional: kind, seed, sensor origins (written by make_scene),
+//                                  up: [x, y, z] (gravity's up in the cloud's frame)
 // Every failure throws InputError with a one-line "<file>: <problem>" message.
 
 #include <memory>
@@ -44,6 +45,9 @@ enum class OctreeEncoding {
 std::shared_ptr<octomap::OcTree> readOctreeData(const std::string& source, const std::string& data,
                                                 OctreeEncoding encoding, double resolution);
 PlaneCoefficients loadPlaneFile(const std::string& path);
+
+/// `up` normalised; InputError("<source>: ...") when it is not finite or zero.
+Eigen::Vector3f checkedUpDirection(const Eigen::Vector3f& up, const std::string& source);
 std::vector<int> loadLabelsFile(const std::string& path, std::size_t expected_count);
 
 /// Writes `scene` in the layout above (binary PLY with normals and colour - or, for an

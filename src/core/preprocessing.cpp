@@ -41,12 +41,15 @@ Eigen::Vector3f chooseViewpoint(const Scene& scene) {
   return mean / static_cast<float>(scene.sensor_origins.size());
 }
 
-// Orients the plane so that the sensors (or, without any, most off-plane points) are on its
-// positive side. Points on the plane are left out of the vote: their side is noise.
+// Orients the plane so that its normal points up (gravity's, where known) or the sensors (or,
+// without any, most off-plane points) are on its positive side. Points on the plane are left
+// out of the vote: their side is noise.
 PlaneCoefficients orientPlane(PlaneCoefficients plane, const Scene& scene, const Eigen::Vector3f& viewpoint,
                               const Cloud& coarse, float on_plane_distance) {
   float side = 0.0f;
-  if (!scene.sensor_origins.empty()) {
+  if (scene.up) {
+    side = plane.head<3>().dot(*scene.up);
+  } else if (!scene.sensor_origins.empty()) {
     side = plane.head<3>().dot(viewpoint) + plane[3];
   } else {
     for (const auto& p : coarse.points) {
@@ -185,7 +188,7 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
       // a camera's frame keeps its pixel grid or comes without normals.
       const bool single_view =
           scene.sensor_origins.size() == 1 && (scene.cloud->isOrganized() || !scene.has_normals);
-      found = estimateSupportingPlane(*coarse, params, sensor, plane, single_view);
+      found = estimateSupportingPlane(*coarse, params, sensor, plane, single_view, scene.up);
     }
     if (found) {
       out.has_table = true;

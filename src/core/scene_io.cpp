@@ -37,6 +37,16 @@ Eigen::Vector3f sensorOrigin(const std::string& path, const YAML::Node& node) {
   return origin;
 }
 
+Eigen::Vector3f upDirection(const std::string& path, const YAML::Node& node) {
+  if (!node.IsSequence() || node.size() != 3) throw InputError(path, "'up' needs 3 numbers [x, y, z]");
+  Eigen::Vector3f up;
+  for (int i = 0; i < 3; ++i) {
+    if (!node[i].IsScalar()) throw InputError(path, "'up' needs 3 numbers [x, y, z]");
+    up[i] = node[i].as<float>();
+  }
+  return checkedUpDirection(up, path);
+}
+
 // scene_info.yaml is written by make_scene; hand edits must still fail with one line.
 void loadSceneInfo(const std::string& path, Scene& scene) {
   try {
@@ -53,6 +63,7 @@ void loadSceneInfo(const std::string& path, Scene& scene) {
       // into it. ("unknown" is what scenes without a kind are grouped as, so it may be given.)
       if (scene.kind == "overall") throw InputError(path, "'kind' must not be 'overall' (reserved for the total)");
     }
+    if (info["up"]) scene.up = upDirection(path, info["up"]);
     if (info["sensor_origins"]) {
       const YAML::Node list = info["sensor_origins"];
       if (!list.IsSequence() || list.size() == 0) {
@@ -68,6 +79,11 @@ void loadSceneInfo(const std::string& path, Scene& scene) {
 }
 
 }  // namespace
+
+Eigen::Vector3f checkedUpDirection(const Eigen::Vector3f& up, const std::string& source) {
+  if (!up.allFinite() || !(up.norm() > 1e-6f)) throw InputError(source, "the up direction must be finite and not zero");
+  return up.normalized();
+}
 
 Scene loadScene(const std::string& path, const SceneLoadOptions& options) {
   Scene scene;
@@ -160,6 +176,7 @@ void saveScene(const Scene& scene, const std::string& directory) {
   YAML::Emitter info;
   info << YAML::BeginMap;
   if (!scene.kind.empty()) info << YAML::Key << "kind" << YAML::Value << scene.kind;
+  if (scene.up) info << YAML::Key << "up" << YAML::Value << YAML::Flow << std::vector<float>{scene.up->x(), scene.up->y(), scene.up->z()};
   if (!scene.sensor_origins.empty()) {  // the loader wants a non-empty list or none at all
     info << YAML::Key << "sensor_origins" << YAML::Value << YAML::BeginSeq;
     for (const auto& origin : scene.sensor_origins) {

@@ -29,6 +29,8 @@ namespace symmetry_segmentation {
 namespace {
 
 constexpr int kMaxCandidatePlanes = 3;
+// With gravity known, walls and box faces found first are passed over: look a little further.
+constexpr int kMaxCandidatePlanesWithUp = 5;
 constexpr int kMaxHullCandidates = 3;
 // Points seen under a candidate's own points that still let it be the support (noise, legs).
 constexpr std::size_t kMaxPointsUnderSupport = 20;
@@ -143,7 +145,8 @@ struct Support {
 /// under the plane's own points on the other side: nothing is seen through or under a table
 /// top, while a plane through an object's face has the rest of the scene on both sides.
 Support supportOf(const CandidatePlane& candidate, const std::vector<CandidatePlane>& all, const Cloud& cloud,
-                  const std::optional<Eigen::Vector3f>& viewpoint, float on_plane_distance, bool single_view) {
+                  const std::optional<Eigen::Vector3f>& viewpoint, const std::optional<Eigen::Vector3f>& gravity_up,
+                  float on_plane_distance, bool single_view) {
   std::vector<const PointT*> off_planes;
   float majority = 0.0f;
   for (const auto& p : cloud.points) {
@@ -153,9 +156,11 @@ Support supportOf(const CandidatePlane& candidate, const std::vector<CandidatePl
     off_planes.push_back(&p);
     majority += distanceTo(candidate.plane, p) > 0.0f ? 1.0f : -1.0f;
   }
-  // Up is the sensor's side, or without a known sensor the side most other points are on (as
-  // preprocessing orients the plane it keeps).
-  const float side = viewpoint ? candidate.plane.head<3>().dot(*viewpoint) + candidate.plane[3] : majority;
+  // Up is gravity's where known, else the sensor's side, or without a known sensor the side most
+  // other points are on (as preprocessing orients the plane it keeps).
+  const float side = gravity_up ? candidate.plane.head<3>().dot(*gravity_up)
+                     : viewpoint ? candidate.plane.head<3>().dot(*viewpoint) + candidate.plane[3]
+                                 : majority;
   const PlaneCoefficients up = side >= 0.0f ? candidate.plane : PlaneCoefficients(-candidate.plane);
   pcl::KdTreeFLANN<PointT> footprint;
   footprint.setInputCloud(candidate.inliers);
@@ -198,17 +203,24 @@ Support supportOf(const CandidatePlane& candidate, const std::vector<CandidatePl
 
 bool estimateSupportingPlane(const Cloud& cloud, const PreprocessParams& params,
                              const std::optional<Eigen::Vector3f>& viewpoint, PlaneCoefficients& plane,
-                             bool single_view) {
+                             bool single_view, const std::optional<Eigen::Vector3f>& up) {
   if (cloud.size() < 3) return false;
   // A "table" holding under a tenth of the scene is more likely an object face.
   const std::size_t min_inliers = std::max<std::size_t>(50, cloud.size() / 10);
+  // With gravity known, a wall or a tilted face is no table however many points it holds; it is
+  // still taken out of the cloud so that the next plane can be found.
+  const float min_up_cos = std::cos(params.max_support_tilt * static_cast<float>(M_PI) / 180.0f);
+  auto facesUp = [&](const CandidatePlane& candidate) {
+    return !up || std::fabs(candidate.plane.head<3>().dot(up->normalized())) >= min_up_cos;
+  };
+  const int max_planes = up ? kMaxCandidatePlanesWithUp : kMaxCandidatePlanes;
   std::vector<CandidatePlane> candidates;
   Cloud::Ptr remaining = cloud.makeShared();
-  for (int k = 0; k < kMaxCandidatePlanes; ++k) {
+  for (int k = 0; k < max_planes; ++k) {
     CandidatePlane candidate;
     pcl::PointIndices inliers;
     if (!largestPlane(remaining, params, min_inliers, candidate, inliers)) break;
-    candidates.push_back(candidate);
+    if (facesUp(candidate)) candidates.push_back(candidate);
     pcl::ExtractIndices<PointT> extract;
     extract.setInputCloud(remaining);
     extract.setIndices(std::make_shared<pcl::PointIndices>(inliers));
@@ -220,14 +232,15 @@ bool estimateSupportingPlane(const Cloud& cloud, const PreprocessParams& params,
   for (CandidatePlane& hull_candidate : hullFacePlanes(cloud.makeShared(), params, 50)) {
     const bool known = std::any_of(candidates.begin(), candidates.end(),
                                    [&](const CandidatePlane& c) { return samePlane(c.plane, hull_candidate.plane); });
-    if (!known) candidates.push_back(std::move(hull_candidate));
+    if (!known && facesUp(hull_candidate)) candidates.push_back(std::move(hull_candidate));
   }
   if (candidates.empty()) return false;
   // A support has (almost) nothing under its own points and faces up; if no candidate
   // qualifies, all compete.
   std::vector<Support> supports;
   for (const CandidatePlane& candidate : candidates) {
-    supports.push_back(supportOf(candidate, candidates, cloud, viewpoint, kOnPlaneFactor * params.ransac_distance, single_view));
+    supports.push_back(
+        supportOf(candidate, candidates, cloud, viewpoint, up, kOnPlaneFactor * params.ransac_distance, single_view));
   }
   auto supportsThings = [&](std::size_t k) {
     return !supports[k].faces_down &&

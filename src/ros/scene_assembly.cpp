@@ -30,6 +30,7 @@ Scene assembleScene(const sensor_msgs::PointCloud2& cloud, const SceneInputs& in
   // plane toward it (without one it votes, which a large table patch can get wrong).
   if (inputs.sensor_origin) scene.sensor_origins.push_back(*inputs.sensor_origin);
   scene.table_plane = inputs.table_plane;
+  scene.up = inputs.up;
   if (inputs.occupancy) {
     scene.occupancy = inputs.occupancy;
   } else if (inputs.occupancy_for_region) {

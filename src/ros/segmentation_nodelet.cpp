@@ -39,6 +39,7 @@ const std::set<std::string>& interfaceParameterNames() {
                                               "method",
                                               "fixed_frame",
                                               "sensor_frame",
+                                              "up_frame",
                                               "table_plane",
                                               "table_plane_frame",
                                               "transform_timeout",
@@ -129,6 +130,7 @@ void SegmentationNodelet::loadInterfaceParameters() {
   readParameter(pnh, "method", method_, "string");
   readParameter(pnh, "fixed_frame", fixed_frame_, "string");
   readParameter(pnh, "sensor_frame", sensor_frame_, "string");
+  readParameter(pnh, "up_frame", up_frame_, "string");
   readParameter(pnh, "transform_timeout", transform_timeout_, "number");
   readParameter(pnh, "max_input_points", max_input_points_, "integer");
   readParameter(pnh, "service_threads", service_threads_, "integer");
@@ -488,6 +490,10 @@ SegmentationNodelet::Outcome SegmentationNodelet::process(const sensor_msgs::Poi
     } else if (frame != cloud.header.frame_id) {
       // The cloud's own viewpoint: the origin of the frame it was measured in.
       inputs.sensor_origin = inputs.cloud_to_processing.translation().cast<float>();
+    }
+    if (!up_frame_.empty()) {
+      // Gravity: the up_frame's z axis (base_link, odom or map on a level robot) in the processing frame.
+      inputs.up = (transform(frame, up_frame_, stamp, timeout, "up").linear() * Eigen::Vector3d::UnitZ()).cast<float>();
     }
     std::string plane_note = "table plane estimated";
     if (plane) {

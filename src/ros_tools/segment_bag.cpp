@@ -33,6 +33,8 @@ const char* const kUsage =
     "  --cloud-topic  only this sensor_msgs/PointCloud2 topic (default: every one)\n"
     "  --sensor-frame frame of the sensor, looked up in the bag's /tf and /tf_static (default:\n"
     "                 the cloud frame's origin when it is not the map's frame)\n"
+    "  --up-frame     a frame whose z axis points up (base_link, odom, map), looked up in the bag's\n"
+    "                 tf as the node's ~up_frame: the table is then a plane facing up\n"
     "  --prefix       namespace of the output topics (default /segmentation):\n"
     "                 P/objects, P/segmented_cloud, P/symmetry_markers\n"
     "  Clouds are segmented with the latest octomap_msgs/Octomap in their frame; without one,\n"
@@ -41,7 +43,7 @@ const char* const kUsage =
     "  without one the table is estimated. Exit code 1 if any cloud failed.\n";
 
 struct Options {
-  std::string input, output, cloud_topic, sensor_frame, prefix = "/segmentation", method = ss::defaultMethod(), config;
+  std::string input, output, cloud_topic, sensor_frame, up_frame, prefix = "/segmentation", method = ss::defaultMethod(), config;
   ss::ConfigValues overrides;
 };
 
@@ -59,6 +61,8 @@ Options parse(int argc, char** argv) {
       options.cloud_topic = arguments.value();
     } else if (arg == "--sensor-frame") {
       options.sensor_frame = arguments.value();
+    } else if (arg == "--up-frame") {
+      options.up_frame = arguments.value();
     } else if (arg == "--prefix") {
       options.prefix = arguments.value();
     } else if (arg == "--method") {
@@ -146,6 +150,13 @@ int main(int argc, char** argv) {
                                      .cast<float>();
         } else if (!inputs.occupancy) {
           inputs.sensor_origin = Eigen::Vector3f::Zero();  // the cloud frame's origin
+        }
+        if (!options.up_frame.empty()) {
+          inputs.up = (tf2::transformToEigen(
+                           transforms.lookupTransform(cloud->header.frame_id, options.up_frame, cloud->header.stamp))
+                           .linear() *
+                       Eigen::Vector3d::UnitZ())
+                          .cast<float>();
         }
         if (plane) {
           // As the node does: the plane's frame moved into the cloud's at the plane's stamp.

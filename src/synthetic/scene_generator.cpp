@@ -77,6 +77,9 @@ void fillSingleView(const RenderedView& view, const CameraPose& camera, const Ca
   scene.has_normals = false;
   scene.has_color = true;
   scene.sensor_origins = {Eigen::Vector3f::Zero()};
+  // A camera on a robot knows gravity from tf; a fused volume's frame is arbitrary, so only the
+  // single view carries its up.
+  scene.up = (world_to_camera.linear() * Eigen::Vector3f::UnitZ()).normalized();
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 // and a PNG picture. Exit codes: 0 success, 1 bad input or failure, 2 bad command line.
 #include <cstring>
 #include <iostream>
+#include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -23,7 +25,7 @@ namespace {
 
 const char* const kUsage =
     "usage: segment_scene <scene> --output DIR [--method M] [--config file.yaml]\n"
-    "                     [--set section.key=value]... [--no-png]\n"
+    "                     [--set section.key=value]... [--up X,Y,Z] [--no-png]\n"
     "       segment_scene --print-config | --print-live-parameters | --list-stages\n"
     "  <scene>    a scene directory (cloud.ply|cloud.pcd, occupancy.bt, table_plane.txt, labels.txt)\n"
     "             or a single .ply/.pcd cloud file\n"
@@ -32,6 +34,7 @@ const char* const kUsage =
 struct Options {
   std::string scene, output, method = ss::defaultMethod(), config;
   ss::ConfigValues overrides;
+  std::optional<Eigen::Vector3f> up;
   bool png = true;
 };
 
@@ -41,6 +44,8 @@ void printUsage() {
   std::cout << ")\n  --config   YAML parameter file (see config/default.yaml)\n"
                "  --set      override one parameter, e.g. --set lccp.concavity_tolerance=15 (all --set\n"
                "             values are applied, then the configuration is checked once)\n"
+               "  --up X,Y,Z gravity's up in the cloud's frame (e.g. 0,-1,0 for a level camera's optical\n"
+               "             frame): the table is then a plane facing up (overrides scene_info.yaml's up)\n"
                "  --no-png   skip the rendered picture\n"
                "  --print-config           print every parameter at its default, documented\n"
                "                           (the text of config/default.yaml), and exit\n"
@@ -63,6 +68,21 @@ void printStages() {
   std::cout << "default symmetry.stages:";
   for (const std::string& name : ss::SymmetryParams().stages) std::cout << ' ' << name;
   std::cout << "\n";
+}
+
+Eigen::Vector3f parseUp(const ss::CommandLine& arguments, const std::string& text) {
+  Eigen::Vector3f up;
+  std::istringstream stream(text);
+  char comma1 = 0, comma2 = 0;
+  std::string rest;
+  if (!(stream >> up.x() >> comma1 >> up.y() >> comma2 >> up.z()) || comma1 != ',' || comma2 != ',' || (stream >> rest)) {
+    arguments.usageError("--up wants three numbers X,Y,Z, got '" + text + "'");
+  }
+  try {
+    return ss::checkedUpDirection(up, "--up");
+  } catch (const ss::InputError& error) {
+    arguments.usageError(error.what());
+  }
 }
 
 Options parse(int argc, char** argv) {
@@ -90,6 +110,8 @@ Options parse(int argc, char** argv) {
     } else if (arg == "--list-stages") {
       printStages();
       std::exit(0);
+    } else if (arg == "--up") {
+      options.up = parseUp(arguments, arguments.value());
     } else if (arg == "--no-png") {
       options.png = false;
     } else if (!arg.empty() && arg[0] == '-') {
@@ -126,7 +148,8 @@ int main(int argc, char** argv) {
     const auto segmenter = ss::makeSegmenter(options.method, config);
 
     ss::Stopwatch load_watch;
-    const ss::Scene scene = ss::loadScene(options.scene);
+    ss::Scene scene = ss::loadScene(options.scene);
+    if (options.up) scene.up = options.up;
     const double load_ms = load_watch.elapsedMs();
     ss::SegmentationResult result = segmenter->segment(scene);
     result.timing_ms.insert(result.timing_ms.begin(), {"load", load_ms});

@@ -95,6 +95,14 @@ TEST(BagTools, SceneToBagThenSegmentBag) {
 #else
   EXPECT_GT(std::stod(output.substr(open + 1, close - open - 1)), 1.0) << output;
 #endif
+  // An up frame the bag's tf does not know fails every cloud, with the reason, and exit 1.
+  EXPECT_EQ(run(std::string(TOOLS_DIR) + "/segment_bag " + scene_bag + " --output " + (dir / "no_up.bag").string() +
+                    " --sensor-frame camera --up-frame no_such_frame",
+                &output),
+            1)
+      << output;
+  EXPECT_NE(output.find("no_such_frame"), std::string::npos) << output;
+  EXPECT_NE(output.find("segmented 0 clouds (2 failed)"), std::string::npos) << output;
   rosbag::Bag bag(result_bag, rosbag::bagmode::Read);
   rosbag::View view(bag, rosbag::TopicQuery("/segmentation/objects"));
   std::vector<ros::Time> stamps;

@@ -360,6 +360,11 @@ TEST(SceneAssembly, TransformsIntoProcessingFrameAndUsesOrigin) {
   ASSERT_EQ(scene.sensor_origins.size(), 1u);
   EXPECT_FLOAT_EQ(scene.sensor_origins[0].z(), 2.0f);
   EXPECT_FALSE(scene.occupancy);
+  EXPECT_FALSE(scene.up.has_value());  // gravity unknown unless the node has an ~up_frame
+  inputs.up = Eigen::Vector3f(0, -1, 0);
+  const ss::Scene with_up = ss::assembleScene(xyzMessage({{0, 0, 1}}), inputs);
+  ASSERT_TRUE(with_up.up.has_value());
+  EXPECT_FLOAT_EQ(with_up.up->y(), -1.0f);
 }
 
 TEST(ResultConversion, OrientedBoxFindsCentreSizeAndAxes) {

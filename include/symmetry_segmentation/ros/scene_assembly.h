@@ -38,6 +38,7 @@ struct SceneInputs {
                                                  ///< normal / table orientation always.
   std::optional<AxisAlignedBox> region_of_interest;  ///< In the processing frame.
   std::optional<PlaneCoefficients> table_plane;      ///< In the processing frame, unit normal; none: the core estimates it.
+  std::optional<Eigen::Vector3f> up;                 ///< Gravity's up in the processing frame, unit; none: unknown.
   /// When there is no `occupancy` in the processing frame but a map in another one: returns
   /// that map moved into the processing frame over the given box (the cloud's usable points,
   /// processing frame, plus kMapMargin). Its InputErrors become INVALID_INPUT.

@@ -117,6 +117,7 @@ class SegmentationNodelet : public nodelet_topic_tools::NodeletLazy {
   std::string method_;
   std::string fixed_frame_;
   std::string sensor_frame_;
+  std::string up_frame_;  ///< Empty: gravity unknown.
   double transform_timeout_ = 0.1;
   int max_input_points_ = 3000000;
   int service_threads_ = 2;
