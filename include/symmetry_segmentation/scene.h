@@ -48,6 +48,10 @@ struct Scene {
   std::vector<std::uint32_t> file_labels;
 
   std::size_t size() const { return cloud ? cloud->size() : 0; }
+  /// Whether `point` may be segmented: inside the region of interest, or there is none.
+  bool inRegionOfInterest(const Eigen::Vector3f& point) const {
+    return !region_of_interest || region_of_interest->contains(point);
+  }
   bool hasLabels() const { return !labels.empty(); }
 };
 

@@ -30,7 +30,7 @@ std::vector<std::vector<int>> objectBottoms(const Scene& scene, const Preprocess
     const PointT& p = input[i];
     if (!isUsablePoint(p) || !p.getNormalVector3fMap().allFinite()) continue;
     // Outside the region of interest nothing is segmented, bottoms included.
-    if (scene.region_of_interest && !scene.region_of_interest->contains(p.getVector3fMap())) continue;
+    if (!scene.inRegionOfInterest(p.getVector3fMap())) continue;
     const float h = height(p);
     if (h < -prepared.table_margin || h > prepared.table_margin) continue;
     const Eigen::Vector3f n = p.getNormalVector3fMap();

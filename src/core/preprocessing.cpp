@@ -233,12 +233,9 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
       finite.swap(above);
     }
   }
-  if (scene.region_of_interest) {
-    const Eigen::AlignedBox3f& box = *scene.region_of_interest;
-    finite.erase(std::remove_if(finite.begin(), finite.end(),
-                                [&](int i) { return !box.contains(input.points[i].getVector3fMap()); }),
-                 finite.end());
-  }
+  finite.erase(std::remove_if(finite.begin(), finite.end(),
+                              [&](int i) { return !scene.inRegionOfInterest(input.points[i].getVector3fMap()); }),
+               finite.end());
   if (finite.empty()) {
     throw InputError(scene.cloud_path, scene.region_of_interest
                                            ? "no points left inside the region of interest above the supporting plane "

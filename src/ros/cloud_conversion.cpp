@@ -124,14 +124,6 @@ Scene sceneFromCloudMessage(const sensor_msgs::PointCloud2& message) {
   return scene;
 }
 
-std::size_t countFinitePoints(const Cloud& cloud, const std::optional<Eigen::AlignedBox3f>& region) {
-  std::size_t count = 0;
-  for (const auto& p : cloud.points) {
-    if (isUsablePoint(p) && (!region || region->contains(p.getVector3fMap()))) ++count;
-  }
-  return count;
-}
-
 void transformCloud(Cloud& cloud, const Eigen::Isometry3d& transform, bool with_normals) {
   const Eigen::Affine3f affine(transform.matrix().cast<float>());
   if (with_normals) {

@@ -21,7 +21,14 @@ Scene assembleScene(const sensor_msgs::PointCloud2& cloud, const SceneInputs& in
   } catch (const InputError& error) {
     throw RequestError(Response::INVALID_INPUT, error.what());
   }
-  if (countFinitePoints(*scene.cloud, scene.region_of_interest) == 0) {
+  // One walk: the segmentable points' bounds also size a map ray-cast for this cloud.
+  Eigen::AlignedBox3d segmentable;
+  for (const auto& p : scene.cloud->points) {
+    if (isUsablePoint(p) && scene.inRegionOfInterest(p.getVector3fMap())) {
+      segmentable.extend(p.getVector3fMap().cast<double>());
+    }
+  }
+  if (segmentable.isEmpty()) {
     throw RequestError(Response::INVALID_INPUT,
                        inputs.region_of_interest ? "no finite point inside the region of interest"
                                                  : "cloud has no finite point");
@@ -34,15 +41,10 @@ Scene assembleScene(const sensor_msgs::PointCloud2& cloud, const SceneInputs& in
   if (inputs.occupancy) {
     scene.occupancy = inputs.occupancy;
   } else if (inputs.occupancy_for_region) {
-    Eigen::AlignedBox3d box;
-    for (const auto& p : scene.cloud->points) {
-      if (!isUsablePoint(p)) continue;
-      if (scene.region_of_interest && !scene.region_of_interest->contains(p.getVector3fMap())) continue;
-      box.extend(p.getVector3fMap().cast<double>());
-    }
     const Eigen::Vector3d margin = Eigen::Vector3d::Constant(kMapMargin);
     try {
-      scene.occupancy = inputs.occupancy_for_region(Eigen::AlignedBox3d(box.min() - margin, box.max() + margin));
+      scene.occupancy =
+          inputs.occupancy_for_region(Eigen::AlignedBox3d(segmentable.min() - margin, segmentable.max() + margin));
     } catch (const InputError& error) {
       throw RequestError(Response::INVALID_INPUT, error.what());
     }

@@ -16,6 +16,7 @@
 #include "symmetry_segmentation/ros/cloud_conversion.h"
 #include "symmetry_segmentation/ros/marker_conversion.h"
 #include "symmetry_segmentation/parameter_schema.h"
+#include "symmetry_segmentation/point_validity.h"
 #include "symmetry_segmentation/ros/parameters.h"
 #include "symmetry_segmentation/ros/result_conversion.h"
 #include "symmetry_segmentation/ros/scene_assembly.h"
@@ -81,7 +82,8 @@ TEST(CloudConversion, XyzCloudKeepsOrderAndHasNoNormals) {
   EXPECT_FALSE(scene.has_color);
   EXPECT_FLOAT_EQ(scene.cloud->points[2].y, 5.0f);
   EXPECT_TRUE(std::isnan(scene.cloud->points[1].x));
-  EXPECT_EQ(ss::countFinitePoints(*scene.cloud), 2u);
+  EXPECT_EQ(std::count_if(scene.cloud->begin(), scene.cloud->end(), [](const ss::PointT& p) { return ss::isUsablePoint(p); }),
+            2);
 }
 
 TEST(CloudConversion, NormalsAndColourAreDetected) {
@@ -318,13 +320,13 @@ TEST(CloudConversion, TransformMovesPointsAndRotatesNormals) {
   EXPECT_NEAR(cloud[0].normal_y, 1.0f, 1e-6f);
 }
 
-TEST(CloudConversion, RegionOfInterestIsValidatedAndCounted) {
-  ss::Cloud cloud;
-  cloud.push_back(point(0, 0, 0));
-  cloud.push_back(point(2, 0, 0));
-  const Eigen::AlignedBox3f box = ss::regionOfInterest(Eigen::Vector3f(-1, -1, -1), Eigen::Vector3f(1, 1, 1));
-  EXPECT_EQ(ss::countFinitePoints(cloud, box), 1u);
-  EXPECT_EQ(ss::countFinitePoints(cloud), 2u);
+TEST(CloudConversion, RegionOfInterestIsValidatedAndContains) {
+  ss::Scene scene;
+  EXPECT_TRUE(scene.inRegionOfInterest(Eigen::Vector3f(2, 0, 0))) << "no region: everything";
+  scene.region_of_interest = ss::regionOfInterest(Eigen::Vector3f(-1, -1, -1), Eigen::Vector3f(1, 1, 1));
+  EXPECT_TRUE(scene.inRegionOfInterest(Eigen::Vector3f(0, 0, 0)));
+  EXPECT_TRUE(scene.inRegionOfInterest(Eigen::Vector3f(1, 1, 1))) << "bounds included";
+  EXPECT_FALSE(scene.inRegionOfInterest(Eigen::Vector3f(2, 0, 0)));
   EXPECT_THROW(ss::regionOfInterest(Eigen::Vector3f(1, 0, 0), Eigen::Vector3f(0, 1, 1)), ss::InputError);
   const float nan = std::numeric_limits<float>::quiet_NaN();
   EXPECT_THROW(ss::regionOfInterest(Eigen::Vector3f(nan, 0, 0), Eigen::Vector3f(0, 1, 1)), ss::InputError);

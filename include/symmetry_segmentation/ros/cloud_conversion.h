@@ -31,9 +31,6 @@ std::string cloudMessageProblem(const sensor_msgs::PointCloud2& message, const C
 /// (frame id not required) finds one.
 Scene sceneFromCloudMessage(const sensor_msgs::PointCloud2& message);
 
-/// Points the pipeline can use (isUsablePoint: finite, within 100 km), inside `region` when given.
-std::size_t countFinitePoints(const Cloud& cloud, const std::optional<Eigen::AlignedBox3f>& region = std::nullopt);
-
 /// Applies a rigid transform to points (and normals when `with_normals`).
 void transformCloud(Cloud& cloud, const Eigen::Isometry3d& transform, bool with_normals);
 
