@@ -10,15 +10,12 @@
 // smaller than their faces (kinfu_tabletop: 5 % of the points). Whatever the table's size, the
 // whole scene lies on one side of it: it is a face of the scene's convex hull. So the hull faces
 // holding the most points are candidates too.
-#include <pcl/ModelCoefficients.h>
 #include <pcl/PointIndices.h>
 #include <pcl/filters/extract_indices.h>
 #include <pcl/kdtree/kdtree_flann.h>
-#include <pcl/sample_consensus/method_types.h>
-#include <pcl/sample_consensus/model_types.h>
-#include <pcl/segmentation/sac_segmentation.h>
 #include <pcl/surface/convex_hull.h>
 
+#include "symmetry_segmentation/plane_fit.h"
 #include "symmetry_segmentation/preprocessing.h"
 
 #include <algorithm>
@@ -54,21 +51,9 @@ float distanceTo(const PlaneCoefficients& plane, const PointT& p) { return plane
 /// The largest plane of `cloud` with at least `min_inliers` points, if any.
 bool largestPlane(const Cloud::Ptr& cloud, const PreprocessParams& params, std::size_t min_inliers,
                   CandidatePlane& candidate, pcl::PointIndices& inliers) {
-  if (cloud->size() < 3) return false;
-  pcl::SACSegmentation<PointT> ransac;
-  ransac.setOptimizeCoefficients(true);
-  ransac.setModelType(pcl::SACMODEL_PLANE);
-  ransac.setMethodType(pcl::SAC_RANSAC);
-  ransac.setDistanceThreshold(params.ransac_distance);
-  ransac.setMaxIterations(params.ransac_iterations);
-  ransac.setInputCloud(cloud);
-  pcl::ModelCoefficients coefficients;
-  ransac.segment(inliers, coefficients);
-  if (coefficients.values.size() != 4 || inliers.indices.size() < min_inliers) return false;
-  PlaneCoefficients plane(coefficients.values[0], coefficients.values[1], coefficients.values[2], coefficients.values[3]);
-  const float norm = plane.head<3>().norm();
-  if (!(norm > 1e-6f)) return false;
-  candidate.plane = plane / norm;
+  const auto plane = fitLargestPlane(cloud, params.ransac_distance, params.ransac_iterations, inliers);
+  if (!plane || inliers.indices.size() < min_inliers) return false;
+  candidate.plane = *plane;
   candidate.inliers = std::make_shared<Cloud>();
   pcl::ExtractIndices<PointT> extract;
   extract.setInputCloud(cloud);

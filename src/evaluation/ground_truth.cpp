@@ -3,14 +3,11 @@
 #include <cmath>
 #include <regex>
 
-#include <pcl/ModelCoefficients.h>
 #include <pcl/PointIndices.h>
-#include <pcl/sample_consensus/method_types.h>
-#include <pcl/sample_consensus/model_types.h>
-#include <pcl/segmentation/sac_segmentation.h>
 
 #include "symmetry_segmentation/errors.h"
 #include "symmetry_segmentation/evaluation/segmentation_metric.h"
+#include "symmetry_segmentation/plane_fit.h"
 #include "symmetry_segmentation/scene_io.h"
 
 namespace symmetry_segmentation {
@@ -75,20 +72,10 @@ PlaneCoefficients fitOsdTablePlane(const std::string& source, const Cloud& cloud
       table->push_back(point);
   }
   if (table->size() < 3) throw InputError(source, "--table-band: fewer than 3 table-labelled points");
-  pcl::SACSegmentation<PointT> fit;
-  fit.setModelType(pcl::SACMODEL_PLANE);
-  fit.setMethodType(pcl::SAC_RANSAC);
-  fit.setDistanceThreshold(0.02);
-  fit.setMaxIterations(500);
-  fit.setOptimizeCoefficients(true);  // least squares over the inliers
-  fit.setInputCloud(table);
   pcl::PointIndices inliers;
-  pcl::ModelCoefficients coefficients;
-  fit.segment(inliers, coefficients);
-  if (inliers.indices.size() < 3 || coefficients.values.size() != 4)
-    throw InputError(source, "--table-band: no plane fits the table-labelled points");
-  return PlaneCoefficients(coefficients.values[0], coefficients.values[1], coefficients.values[2],
-                           coefficients.values[3]);
+  const auto plane = fitLargestPlane(table, 0.02, 500, inliers);
+  if (!plane) throw InputError(source, "--table-band: no plane fits the table-labelled points");
+  return *plane;
 }
 
 Scene loadLabelledScene(const std::string& path, const GroundTruthOptions& options) {
