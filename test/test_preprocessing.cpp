@@ -131,6 +131,8 @@ TEST(Preprocessing, RegionOfInterestSelectsObjectsButNotTheTable) {
   std::size_t inside = 0;
   for (const auto& p : scene.cloud->points) inside += scene.region_of_interest->contains(p.getVector3fMap());
   EXPECT_EQ(prepared.kept_input_indices.size(), inside);
+  EXPECT_GT(prepared.dropped.outside_roi, 1000u) << "the other box";
+  EXPECT_EQ(prepared.dropped.off_support + prepared.dropped.too_high, 0u);
   // A box around nothing is an input error, not an empty result.
   scene.region_of_interest = Eigen::AlignedBox3f(Eigen::Vector3f(0.2f, 0.2f, 0.05f), Eigen::Vector3f(0.3f, 0.3f, 1.0f));
   EXPECT_THROW(ss::preprocess(scene, ss::PreprocessParams{}), ss::InputError);
@@ -266,11 +268,13 @@ TEST(Preprocessing, KeepsOnlyWhatStandsOverTheTable) {
     scene.cloud->push_back(p);
   };
   test_clouds::addWall(*scene.cloud, 0.7f, 1.0f, -0.7f, 0.8f, 0.01f);  // 30 cm behind the table
+  const std::size_t before_floor = scene.cloud->size();
   for (float x = -1.0f; x <= 1.0f; x += 0.01f) {
     for (float y = -1.0f; y <= 0.7f; y += 0.02f) {
       if (std::fabs(x) > 0.45f || std::fabs(y) > 0.45f) add(x, y, -0.7f);  // the floor, where the table hides none
     }
   }
+  const std::size_t floor_points = scene.cloud->size() - before_floor;
   for (float x = -0.1f; x <= 0.1f; x += 0.01f) {
     for (float y = -0.1f; y <= 0.1f; y += 0.01f) add(x, y, 0.7f);  // the shade
   }
@@ -293,6 +297,16 @@ TEST(Preprocessing, KeepsOnlyWhatStandsOverTheTable) {
   const auto support = ss::supportSurface(prepared);
   ASSERT_TRUE(support.has_value());
   EXPECT_GE(support->polygon.size(), 4u);
+  // Why each point was left out is counted, and every point is accounted for.
+  const ss::PreprocessedScene::Dropped& dropped = prepared.dropped;
+  EXPECT_EQ(dropped.out_of_range, 0u);
+  EXPECT_GE(dropped.too_high, 21u * 21u) << "the shade";
+  EXPECT_GT(dropped.on_table, floor_points) << "the table and everything under it";
+  EXPECT_GT(dropped.off_support, 100u) << "the wall between the table's height and max_object_height";
+  EXPECT_EQ(dropped.outside_roi, 0u);
+  EXPECT_EQ(prepared.kept_input_indices.size() + dropped.out_of_range + dropped.on_table + dropped.too_high +
+                dropped.off_support + dropped.outside_roi,
+            scene.cloud->size());
 
   // Switched off, the wall over the table's height is segmented again.
   params.crop_to_support = false;

@@ -65,6 +65,14 @@ struct PreprocessedScene {
   PlaneCoefficients table_plane = PlaneCoefficients::Zero();  ///< Normal points away from the table top.
   std::optional<SupportPolygon> support_polygon;  ///< The table's extent, when cropped to it.
   Eigen::Vector3f viewpoint = Eigen::Vector3f::Zero();         ///< Used to orient normals.
+  /// Finite input points left out, by reason (checked in this order): why an object is missing.
+  struct Dropped {
+    std::size_t out_of_range = 0;  ///< Farther than max_range from the viewpoint.
+    std::size_t on_table = 0;      ///< Within the table margin, or under the table.
+    std::size_t too_high = 0;      ///< Higher than max_object_height above it.
+    std::size_t off_support = 0;   ///< Not over the table's extent, or a background surface.
+    std::size_t outside_roi = 0;   ///< Outside the region of interest.
+  } dropped;
 };
 
 /// Throws InputError when nothing is left to segment (no finite point, all on the table).

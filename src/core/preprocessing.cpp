@@ -167,6 +167,7 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
     for (int i : finite) {
       if ((input.points[i].getVector3fMap() - out.viewpoint).norm() <= params.max_range) in_range.push_back(i);
     }
+    out.dropped.out_of_range = finite.size() - in_range.size();
     finite.swap(in_range);
   }
 
@@ -226,16 +227,24 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
       std::vector<int> above;
       above.reserve(finite.size());
       for (std::size_t k = 0; k < finite.size(); ++k) {
-        if (distances[k] <= out.table_margin || distances[k] > max_height) continue;
-        if (!input_over_support.empty() && !input_over_support[finite[k]]) continue;
-        above.push_back(finite[k]);
+        if (distances[k] <= out.table_margin) {
+          ++out.dropped.on_table;
+        } else if (distances[k] > max_height) {
+          ++out.dropped.too_high;
+        } else if (!input_over_support.empty() && !input_over_support[finite[k]]) {
+          ++out.dropped.off_support;
+        } else {
+          above.push_back(finite[k]);
+        }
       }
       finite.swap(above);
     }
   }
+  const std::size_t before_roi = finite.size();
   finite.erase(std::remove_if(finite.begin(), finite.end(),
                               [&](int i) { return !scene.inRegionOfInterest(input.points[i].getVector3fMap()); }),
                finite.end());
+  out.dropped.outside_roi = before_roi - finite.size();
   if (finite.empty()) {
     throw InputError(scene.cloud_path, scene.region_of_interest
                                            ? "no points left inside the region of interest above the supporting plane "

@@ -40,6 +40,12 @@ PipelineState preparePipeline(const Scene& scene, const PreprocessParams& prepro
   state.graph = std::make_unique<SymmetricGraphCut>(state.cloud, *state.occupancy, table, params.cut);
   state.evidence = std::make_unique<GraphEvidence>(*state.graph, *state.occupancy, params.filter);
   state.timing_ms.emplace_back("graph", stage.lap());
+  const PreprocessedScene::Dropped& dropped = state.prepared.dropped;
+  state.counts.emplace_back("dropped.out_of_range", dropped.out_of_range);
+  state.counts.emplace_back("dropped.on_table", dropped.on_table);
+  state.counts.emplace_back("dropped.too_high", dropped.too_high);
+  state.counts.emplace_back("dropped.off_support", dropped.off_support);
+  state.counts.emplace_back("dropped.outside_roi", dropped.outside_roi);
   state.counts.emplace_back("working_points", state.cloud->size());
   return state;
 }
