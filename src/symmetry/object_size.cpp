@@ -105,11 +105,27 @@ bool hasObjectSize(const Cloud::ConstPtr& cloud, const std::vector<int>& points,
   return segmentExtents(*cloud, on_plane, std::nullopt)[0] <= params.max_plane_extent;
 }
 
+float topHeight(const Cloud& cloud, const std::vector<int>& points, const PlaneCoefficients& table_plane) {
+  if (points.empty()) return 0.0f;
+  const float norm = table_plane.head<3>().norm();
+  std::vector<float> heights;
+  heights.reserve(points.size());
+  for (int i : points) heights.push_back((table_plane.head<3>().dot(cloud[i].getVector3fMap()) + table_plane[3]) / norm);
+  const auto k = static_cast<std::ptrdiff_t>((1.0f - kTrim) * static_cast<float>(heights.size() - 1));
+  std::nth_element(heights.begin(), heights.begin() + k, heights.end());
+  return heights[static_cast<std::size_t>(k)];
+}
+
 void ObjectSizeStage::run(PipelineState& state) const {
   const float plane_distance = kOnPlaneVoxels * voxel_size_;
   const std::size_t before = state.segments.size();
+  const bool check_top = params_.min_top_height > 0.0f && state.prepared.has_table;
   state.segments.erase(std::remove_if(state.segments.begin(), state.segments.end(),
                                       [&](const CandidateSegment& segment) {
+                                        if (check_top && topHeight(*state.cloud, segment.points, state.prepared.table_plane) <
+                                                             params_.min_top_height) {
+                                          return true;
+                                        }
                                         return !hasObjectSize(state.cloud, segment.points, state.up, params_, plane_distance);
                                       }),
                        state.segments.end());

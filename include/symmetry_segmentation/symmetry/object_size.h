@@ -3,7 +3,8 @@
 // is mirror-symmetric about every plane across it, so a wall, a table remnant or a shelf passes
 // every symmetry test; what gives them away is their size. A segment larger than max_extent
 // along any axis (height over the table, or its footprint's sides), or mostly one plane wider
-// than max_plane_extent, is dropped. Extents leave out 5 % of the points at either end: a few
+// than max_plane_extent, is dropped; so is one whose top is less than min_top_height over the
+// table (a scrap of the table's own depth noise, which a far single view leaves above the margin). Extents leave out 5 % of the points at either end: a few
 // stray points of a neighbour do not make an object large.
 
 #include <optional>
@@ -16,6 +17,9 @@
 #include "symmetry_segmentation/symmetry/symmetry_params.h"
 
 namespace symmetry_segmentation {
+
+/// Height over `table_plane` of the top of `points` (95th percentile of their heights; 0 when empty).
+float topHeight(const Cloud& cloud, const std::vector<int>& points, const PlaneCoefficients& table_plane);
 
 /// The extents (m) of `points` of `cloud` along three axes, largest first: with `up`, the height
 /// along it and the sides of the footprint (principal axes in the plane normal to it), else the

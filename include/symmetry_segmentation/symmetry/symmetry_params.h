@@ -335,6 +335,7 @@ struct ObjectSizeParams {
   float max_extent = 0.5f;
   float max_plane_extent = 0.4f;
   float min_plane_share = 0.9f;
+  float min_top_height = 0.015f;
 };
 
 inline void describeParameters(ParameterList<ObjectSizeParams>& list) {
@@ -343,7 +344,9 @@ inline void describeParameters(ParameterList<ObjectSizeParams>& list) {
            "larger along any axis (height over the table, footprint sides) is not a graspable object; 0: no limit")
       .add("max_plane_extent", &P::max_plane_extent, 0.0, 100.0, "m",
            "a segment mostly on one plane wider than this is a wall or table, not an object; 0: no limit")
-      .add("min_plane_share", &P::min_plane_share, 0.0, 1.0, "", "mostly on one plane: this share of its points");
+      .add("min_plane_share", &P::min_plane_share, 0.0, 1.0, "", "mostly on one plane: this share of its points")
+      .add("min_top_height", &P::min_top_height, 0.0, 1.0, "m",
+           "a segment whose top (95th percentile) is lower over the table is a scrap of the table's noise; 0: off");
 }
 
 /// Stage dedup: one segment per object.
