@@ -2,6 +2,7 @@
 // a valid one-point cloud.pcd, written once.
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <fstream>
 
 #include "fuzz_support.h"
@@ -31,5 +32,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
   }));
   for (const auto& origin : scene.sensor_origins) FUZZ_CHECK(origin.allFinite());
+  // Gravity, when given, is a finite unit vector (checkedUpDirection).
+  if (scene.up) FUZZ_CHECK(scene.up->allFinite() && std::abs(scene.up->norm() - 1.0f) < 1e-4f);
   return 0;
 }

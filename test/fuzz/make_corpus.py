@@ -166,6 +166,7 @@ def side_file_seeds():
     write("plane_file", "tilted", "0.1 -0.2 3.5e0 1e-3")
     write("scene_info", "full", "kind: cluttered\nseed: 42\nsensor_origins:\n  - [0, 0, 1.2]\n  - [0.5, -0.5, 1]\n")
     write("scene_info", "kind_only", "kind: stacked-boxes_2\n")
+    write("scene_info", "up", "kind: clutter\nup: [0, -0.8, -0.6]\nsensor_origins:\n  - [0, 0, 0]\n")
 
 
 if __name__ == "__main__":
