@@ -35,6 +35,8 @@ class FakeEvidence : public ss::SceneEvidence {
   std::function<bool(const Eigen::Vector3f&)> free = [](const Eigen::Vector3f&) { return false; };
   /// Default: from the cloud's normals (SceneEvidence).
   std::function<bool(int a, int b)> crease;
+  /// Creases that depend on the angle asked for (first when set).
+  std::function<bool(int a, int b, float angle_deg)> crease_at_angle;
 
   const ss::Cloud& cloud() const override { return cloud_; }
   const std::vector<std::vector<int>>& neighbours() const override { return neighbours_; }
@@ -51,6 +53,7 @@ class FakeEvidence : public ss::SceneEvidence {
   }
   bool observedFree(const Eigen::Vector3f& point) const override { return free(point); }
   bool concaveCrease(int a, int b, float angle_deg) const override {
+    if (crease_at_angle) return crease_at_angle(a, b, angle_deg);
     return crease ? crease(a, b) : ss::SceneEvidence::concaveCrease(a, b, angle_deg);
   }
 

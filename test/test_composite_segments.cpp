@@ -212,3 +212,49 @@ TEST(CompositeSegments, TheStageTakesPartsFromCandidatesTheFilterDidNotKeep) {
   EXPECT_EQ(state.segments[0].points, segment(0, 59).points);
   EXPECT_EQ(state.segments[1].points, segment(60, 99).points);
 }
+
+// Normals smoothed over a few centimetres turn through the concave corner where a box stands on
+// another in steps of ~15 deg per 1 cm link: no link there is a crease at crease_angle_deg, yet
+// the corner is no face running on. A path over such links does not make the boxes one body;
+// one over a flat face (steps of a few degrees) still does.
+TEST(CompositeSegments, APathThroughASmoothedConcaveCornerDoesNotJoinTheParts) {
+  // The corner 100..109 in neither part, linked to A at 55 and to B at 65 (as above).
+  std::vector<std::vector<int>> neighbours = chainNeighbours();
+  neighbours.resize(kPoints + 10);
+  for (int i = kPoints; i < kPoints + 10; ++i) {
+    if (i > kPoints) neighbours[i].push_back(i - 1);
+    if (i + 1 < kPoints + 10) neighbours[i].push_back(i + 1);
+  }
+  neighbours[55].push_back(kPoints);
+  neighbours[kPoints].push_back(55);
+  neighbours[kPoints + 9].push_back(65);
+  neighbours[65].push_back(kPoints + 9);
+  const auto onCorner = [](int a, int b) { return std::max(a, b) >= kPoints; };
+  // Every corner link concave, its normals `turn` degrees apart; the seam (59, 60) a sharp crease.
+  const auto corner_turning = [&](float turn) {
+    auto result = evidence(neighbours, noCrease, mirrorWithinObject);
+    result.crease_at_angle = [onCorner, turn](int a, int b, float angle_deg) {
+      return creaseAtSeam(a, b) || (onCorner(a, b) && turn > angle_deg);
+    };
+    return result;
+  };
+  const ss::CandidateSegment whole = segment(0, kPoints + 9, 1.0f);
+  const std::vector<ss::CandidateSegment> parts = {segment(0, 59, 2.0f), segment(60, 99, 3.0f)};
+  ss::CompositeSegmentParams params;
+  params.min_seam_links = 1;
+
+  std::vector<ss::CandidateSegment> segments = {whole};
+  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, corner_turning(15.0f), params), 1u)
+      << "a corner turning 15 deg per link is a seam";
+  EXPECT_EQ(segments.size(), 2u);
+
+  segments = {whole};
+  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, corner_turning(4.0f), params), 0u)
+      << "a face turning 4 deg per link runs on: one body";
+  EXPECT_EQ(segments.size(), 1u);
+
+  // Judged at the crease angle instead, the smoothed corner joins them (what this replaced).
+  params.joined_angle_deg = params.crease_angle_deg;
+  segments = {whole};
+  EXPECT_EQ(ss::splitCompositeSegments(segments, parts, corner_turning(15.0f), params), 0u);
+}

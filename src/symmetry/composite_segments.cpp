@@ -45,6 +45,9 @@ bool apartOrCreased(const std::vector<int>& a, const std::vector<int>& b,
 /// objects touch at creases; parts of one object that each have a symmetry of their own (an
 /// L-shaped block's slab and upright) meet at a crease too, but also run on into each other
 /// somewhere over a flat face or a convex edge, directly or through a corner neither part took.
+/// `crease` here is the stricter joined_angle_deg: normals smoothed over a few centimetres turn
+/// through a concave corner in steps of ~15 deg at 1 cm, so a path at crease_angle_deg slips
+/// from one stacked box onto the other through the seam it should stop at.
 bool joinedWithoutCrease(const std::vector<int>& whole, const std::vector<int>& a, const std::vector<int>& b,
                          const std::vector<std::vector<int>>& neighbours, const Creases& crease) {
   std::vector<char> seen(whole.size(), 0);
@@ -99,8 +102,8 @@ bool twoObjects(const CandidateSegment& whole, const std::vector<int>& a, const 
 /// `parts` and the rest of `whole` (which keeps `whole`'s plane).
 std::optional<std::pair<CandidateSegment, CandidateSegment>> findSplit(
     const CandidateSegment& whole, const std::vector<CandidateSegment>& parts,
-    const std::vector<std::vector<int>>& neighbours, const Creases& crease, const SceneEvidence& evidence,
-    const CompositeSegmentParams& params) {
+    const std::vector<std::vector<int>>& neighbours, const Creases& crease, const Creases& joined_crease,
+    const SceneEvidence& evidence, const CompositeSegmentParams& params) {
   const double size = static_cast<double>(whole.points.size());
   std::vector<std::size_t> nested;
   std::vector<std::size_t> inside;  // per nested part: its points within `whole`
@@ -128,7 +131,7 @@ std::optional<std::pair<CandidateSegment, CandidateSegment>> findSplit(
       const std::size_t covered = inside[x] + inside[y] - std::min(shared, std::min(inside[x], inside[y]));
       if (covered < params.min_coverage * size || covered <= best_covered) continue;
       if (!twoObjects(whole, a, b, params.min_crease_fraction, neighbours, crease, evidence, params)) continue;
-      if (joinedWithoutCrease(whole.points, a, b, neighbours, crease)) continue;
+      if (joinedWithoutCrease(whole.points, a, b, neighbours, joined_crease)) continue;
       best_pair = std::make_pair(nested[x], nested[y]);
       best_covered = covered;
     }
@@ -165,11 +168,12 @@ std::size_t splitCompositeSegments(std::vector<CandidateSegment>& segments, cons
                                    const SceneEvidence& evidence, const CompositeSegmentParams& params) {
   const std::vector<std::vector<int>>& neighbours = evidence.neighbours();
   const Creases crease(evidence, params.crease_angle_deg);
+  const Creases joined_crease(evidence, params.joined_angle_deg);
   std::vector<CandidateSegment> kept;
   std::vector<CandidateSegment> added;
   std::size_t replaced = 0;
   for (auto& segment : segments) {
-    auto split = findSplit(segment, parts, neighbours, crease, evidence, params);
+    auto split = findSplit(segment, parts, neighbours, crease, joined_crease, evidence, params);
     if (!split) {
       kept.push_back(std::move(segment));
       continue;

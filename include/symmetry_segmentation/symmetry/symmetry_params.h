@@ -250,6 +250,7 @@ inline void describeParameters(ParameterList<MirrorTwinParams>& list) {
 /// Stage composites: a segment that is two objects meeting at a concave seam.
 struct CompositeSegmentParams {
   float crease_angle_deg = 30.0f;
+  float joined_angle_deg = 10.0f;
   float min_nested_fraction = 0.8f;
   float min_part_fraction = 0.2f;
   float max_part_fraction = 0.8f;
@@ -265,6 +266,9 @@ inline void describeParameters(ParameterList<CompositeSegmentParams>& list) {
   using P = CompositeSegmentParams;
   list.add("crease_angle_deg", &P::crease_angle_deg, 0.1, 180.0, "deg",
            "concave links whose normals differ more are creases where two objects may meet")
+      .add("joined_angle_deg", &P::joined_angle_deg, 0.1, 180.0, "deg",
+           "two parts found alone are one body when a path joins them over links that are convex or "
+           "closer than this (at 1 cm a concave corner turns ~15 deg per link)")
       .add("min_nested_fraction", &P::min_nested_fraction, 0.0, 1.0, "", "share of each part inside the composite")
       .add("min_part_fraction", &P::min_part_fraction, 0.0, 1.0, "", "each part has at least this share of the composite...")
       .add("max_part_fraction", &P::max_part_fraction, 0.0, 1.0, "", "...and at most this share")
