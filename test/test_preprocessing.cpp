@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <set>
 
 #include "symmetry_segmentation/errors.h"
+#include "symmetry_segmentation/organized_normals.h"
 #include "symmetry_segmentation/preprocessing.h"
 #include "symmetry_segmentation/synthetic/scene_generator.h"
 #include "symmetry_segmentation/voxel_grid.h"
@@ -25,6 +27,33 @@ ss::Scene tableWithBox(bool with_normals) {
   scene.has_normals = with_normals;
   scene.sensor_origins.push_back({0.5f, 0.5f, 0.8f});
   return scene;
+}
+
+
+// A camera's organized frame (optical frame: x right, y down, z ahead; 3.3 mm per pixel at 1 m)
+// of a room's concave corner: a floor 0.4 m below the camera meeting a wall 1 m ahead. No normals.
+constexpr float kFloorY = 0.4f;
+ss::Cloud concaveCornerFrame() {
+  constexpr int kWidth = 160, kHeight = 200;
+  constexpr float kFocal = 300.0f, kCenterRow = 40.0f;  // the corner is at row 160
+  ss::Cloud frame(kWidth, kHeight);
+  for (int v = 0; v < kHeight; ++v) {
+    for (int u = 0; u < kWidth; ++u) {
+      const Eigen::Vector3f ray((u - kWidth / 2.0f) / kFocal, (v - kCenterRow) / kFocal, 1.0f);
+      float t = 1.0f;                                         // the wall, z = 1
+      if (ray.y() > 0.0f) t = std::min(t, kFloorY / ray.y());  // the floor
+      ss::PointT& p = frame.at(u, v);
+      p.getVector3fMap() = t * ray;
+      p.r = p.g = p.b = 128;
+      p.normal_x = p.normal_y = p.normal_z = NAN;
+    }
+  }
+  return frame;
+}
+
+// Whether `normal` is within `degrees` of `expected` (unit vectors).
+bool within(const Eigen::Vector3f& normal, const Eigen::Vector3f& expected, float degrees) {
+  return normal.allFinite() && normal.dot(expected) > std::cos(degrees * static_cast<float>(M_PI) / 180.0f);
 }
 
 }  // namespace
@@ -436,4 +465,91 @@ TEST(Preprocessing, KnownGravityPicksTheTableOverAWallThingsHangOn) {
   // Gravity that no plane faces: no support rather than a wrong one.
   EXPECT_FALSE(ss::estimateSupportingPlane(*scene.cloud, params, scene.sensor_origins.front(), plane, true,
                                            Eigen::Vector3f(1.0f, 0.0f, 1.0f).normalized()));
+}
+
+// From the pixel grid, points of either face of a concave corner have their own face's normal
+// once the window (10 pixels: 3.3 cm on the wall, more on the floor seen at a slant) no longer
+// reaches across; the indices choose the points and their order; an unorganized cloud gets none.
+TEST(OrganizedNormals, EachFaceOfACornerGetsItsOwnNormalAndTheIndicesChooseThePoints) {
+  const ss::Cloud frame = concaveCornerFrame();
+  std::vector<int> indices(frame.size());
+  for (std::size_t i = 0; i < frame.size(); ++i) indices[i] = static_cast<int>(frame.size() - 1 - i);
+  const auto points = ss::pointsWithOrganizedNormals(frame, indices, Eigen::Vector3f::Zero(), 10.0f);
+  ASSERT_TRUE(points);
+  ASSERT_EQ(points->size(), frame.size());
+  const Eigen::Vector3f toward_camera_from_floor(0.0f, -1.0f, 0.0f), toward_camera_from_wall(0.0f, 0.0f, -1.0f);
+  std::size_t floor_checked = 0, wall_checked = 0;
+  for (std::size_t k = 0; k < points->size(); ++k) {
+    const ss::PointT& p = points->points[k];
+    ASSERT_EQ(p.getVector3fMap(), frame.points[indices[k]].getVector3fMap());
+    const float to_wall = 1.0f - p.z, to_floor = kFloorY - p.y;
+    if (std::fabs(p.x) > 0.15f) continue;  // away from the image's border
+    if (to_floor < 1e-4f && to_wall > 0.08f && to_wall < 0.15f) {
+      EXPECT_TRUE(within(p.getNormalVector3fMap(), toward_camera_from_floor, 10.0f)) << p;
+      ++floor_checked;
+    } else if (to_wall < 1e-4f && to_floor > 0.025f && to_floor < 0.05f) {
+      EXPECT_TRUE(within(p.getNormalVector3fMap(), toward_camera_from_wall, 10.0f)) << p;
+      ++wall_checked;
+    }
+  }
+  EXPECT_GT(floor_checked, 20u);
+  EXPECT_GT(wall_checked, 20u);
+
+  // The same frame moved into a robot's base frame (z up, the camera 1.2 m high and looking
+  // down at 30 deg) gives the same normals, moved: z there is no depth.
+  const Eigen::Affine3f camera_to_base = Eigen::Translation3f(0.3f, -0.2f, 1.2f) *
+                                         Eigen::AngleAxisf(static_cast<float>(-M_PI / 2 - M_PI / 6), Eigen::Vector3f::UnitX());
+  ss::Cloud moved = frame;
+  for (auto& p : moved.points) p.getVector3fMap() = camera_to_base * p.getVector3fMap();
+  const auto moved_points = ss::pointsWithOrganizedNormals(moved, indices, camera_to_base.translation(), 10.0f);
+  ASSERT_TRUE(moved_points);
+  std::size_t compared = 0;
+  for (std::size_t k = 0; k < points->size(); ++k) {
+    const Eigen::Vector3f original = points->points[k].getNormalVector3fMap();
+    if (!original.allFinite()) continue;
+    ++compared;
+    ASSERT_TRUE(within(moved_points->points[k].getNormalVector3fMap(), camera_to_base.linear() * original, 1.0f))
+        << k << ": " << moved_points->points[k].getNormalVector3fMap().transpose() << " vs "
+        << (camera_to_base.linear() * original).transpose();
+  }
+  EXPECT_GT(compared, frame.size() / 2);
+
+  ss::Cloud unorganized = frame;
+  unorganized.width = static_cast<std::uint32_t>(frame.size());
+  unorganized.height = 1;
+  EXPECT_FALSE(ss::pointsWithOrganizedNormals(unorganized, indices, Eigen::Vector3f::Zero(), 10.0f));
+}
+
+// A camera frame without normals: each voxel's normal is the mean of its pixels' normals from
+// the grid (organized_normal_smoothing), not an estimate on the voxels (0: normal_radius).
+TEST(Preprocessing, AnOrganizedFrameWithoutNormalsGetsThemFromItsPixelGrid) {
+  ss::Scene scene;
+  scene.cloud = std::make_shared<ss::Cloud>(concaveCornerFrame());
+  scene.has_normals = false;
+  ss::PreprocessParams params;
+  params.remove_table = false;
+  std::vector<int> all(scene.cloud->size());
+  std::iota(all.begin(), all.end(), 0);
+  const auto from_grid = ss::pointsWithOrganizedNormals(*scene.cloud, all, Eigen::Vector3f::Zero(), 10.0f);
+  ASSERT_TRUE(from_grid);
+  // Per setting: of the voxels whose pixels have normals, how many carry their mean.
+  const auto share_of_grid_means = [&](float smoothing) {
+    params.organized_normal_smoothing = smoothing;
+    const auto prepared = ss::preprocess(scene, params);
+    std::size_t voxels = 0, means = 0;
+    for (std::size_t v = 0; v < prepared.cloud->size(); ++v) {
+      Eigen::Vector3f sum = Eigen::Vector3f::Zero();
+      for (int i : prepared.voxel_to_input[v]) {
+        const Eigen::Vector3f n = from_grid->points[i].getNormalVector3fMap();
+        if (n.allFinite()) sum += n;
+      }
+      if (sum.norm() < 1e-6f) continue;
+      ++voxels;
+      means += within(prepared.cloud->points[v].getNormalVector3fMap(), sum.normalized(), 0.5f) ? 1 : 0;
+    }
+    EXPECT_GT(voxels, 100u);
+    return static_cast<double>(means) / std::max<std::size_t>(voxels, 1);
+  };
+  EXPECT_EQ(share_of_grid_means(10.0f), 1.0);
+  EXPECT_LT(share_of_grid_means(0.0f), 0.9) << "estimated on the voxels, normals near the corner differ";
 }

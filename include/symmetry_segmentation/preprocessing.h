@@ -22,6 +22,7 @@ struct PreprocessParams {
   float ransac_distance = 0.01f;
   int ransac_iterations = 500;
   float normal_radius = 0.03f;
+  float organized_normal_smoothing = 10.0f;
   float max_range = 0.0f;
   bool crop_to_support = true;
   float support_margin = 0.05f;
@@ -41,6 +42,9 @@ inline void describeParameters(ParameterList<PreprocessParams>& list) {
       .add("ransac_distance", &P::ransac_distance, 0.001, 0.1, "m", "RANSAC inlier distance when the plane is estimated")
       .add("ransac_iterations", &P::ransac_iterations, 1, 1000000, "", "RANSAC iterations when the plane is estimated")
       .add("normal_radius", &P::normal_radius, 0.005, 0.5, "m", "radius for normal estimation when the cloud has none")
+      .add("organized_normal_smoothing", &P::organized_normal_smoothing, 0.0, 100.0, "pixels",
+           "a camera frame without normals (organized) gets them from its pixel grid, over a window this wide at "
+           "1 m, before the voxel grid; 0: estimate them on the working cloud within normal_radius instead")
       .add("max_range", &P::max_range, 0.0, 100.0, "m", "drop points farther than this from the sensor; 0 keeps all")
       .add("crop_to_support", &P::crop_to_support,
            "keep only points over the table's extent (the polygon of its points): walls, floor, background go")

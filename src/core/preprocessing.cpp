@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 #include <pcl/features/normal_3d.h>
 #include <pcl/features/normal_3d_omp.h>
@@ -13,6 +14,7 @@
 
 #include "symmetry_segmentation/background_surfaces.h"
 #include "symmetry_segmentation/errors.h"
+#include "symmetry_segmentation/organized_normals.h"
 #include "symmetry_segmentation/voxel_grid.h"
 
 namespace symmetry_segmentation {
@@ -254,7 +256,23 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
   }
   out.kept_input_indices = finite;
 
-  auto grid = voxelDownsample(input, finite, params.voxel_size, scene.has_normals);
+  // A camera frame without normals gets them from its pixel grid, at the sensor's resolution;
+  // the voxels average them.
+  Cloud::Ptr kept_with_normals;
+  if (!scene.has_normals && params.organized_normal_smoothing > 0.0f) {
+    kept_with_normals = pointsWithOrganizedNormals(input, finite, out.viewpoint, params.organized_normal_smoothing);
+  }
+  VoxelGridResult grid;
+  if (kept_with_normals) {
+    std::vector<int> all(finite.size());
+    std::iota(all.begin(), all.end(), 0);
+    grid = voxelDownsample(*kept_with_normals, all, params.voxel_size, true);
+    for (auto& members : grid.members) {
+      for (int& member : members) member = finite[member];  // back to input points
+    }
+  } else {
+    grid = voxelDownsample(input, finite, params.voxel_size, scene.has_normals);
+  }
   out.cloud = grid.cloud;
   out.voxel_to_input = std::move(grid.members);
   out.input_to_voxel.assign(input.size(), -1);
