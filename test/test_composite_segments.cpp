@@ -25,6 +25,22 @@ std::vector<std::vector<int>> chainNeighbours() {
   return neighbours;
 }
 
+// The chain plus a corner 100..109 in neither object, linked to A at 55 and to B at 65: a path
+// from A to B that avoids the seam.
+std::vector<std::vector<int>> chainWithCorner() {
+  std::vector<std::vector<int>> neighbours = chainNeighbours();
+  neighbours.resize(kPoints + 10);
+  for (int i = kPoints; i < kPoints + 10; ++i) {
+    if (i > kPoints) neighbours[i].push_back(i - 1);
+    if (i + 1 < kPoints + 10) neighbours[i].push_back(i + 1);
+  }
+  neighbours[55].push_back(kPoints);
+  neighbours[kPoints].push_back(55);
+  neighbours[kPoints + 9].push_back(65);
+  neighbours[65].push_back(kPoints + 9);
+  return neighbours;
+}
+
 ss::CandidateSegment segment(int first, int last, float plane_id = 0.0f) {
   ss::CandidateSegment s;
   s.points.resize(last - first + 1);
@@ -167,17 +183,7 @@ TEST(CompositeSegments, TheRestOfOneObjectFoundAloneIsTheOtherWhenApartOrMetAtCr
 // (an L-shaped block's slab and upright, joined through the corner under the upright that
 // neither part took) are one object; the same parts joined only across creases are two.
 TEST(CompositeSegments, PartsJoinedWithoutACreaseThroughTheRestStayOneObject) {
-  // A corner 100..109 in neither part, linked to A at 55 and to B at 65.
-  std::vector<std::vector<int>> neighbours = chainNeighbours();
-  neighbours.resize(kPoints + 10);
-  for (int i = kPoints; i < kPoints + 10; ++i) {
-    if (i > kPoints) neighbours[i].push_back(i - 1);
-    if (i + 1 < kPoints + 10) neighbours[i].push_back(i + 1);
-  }
-  neighbours[55].push_back(kPoints);
-  neighbours[kPoints].push_back(55);
-  neighbours[kPoints + 9].push_back(65);
-  neighbours[65].push_back(kPoints + 9);
+  const std::vector<std::vector<int>> neighbours = chainWithCorner();
   const ss::CandidateSegment whole = segment(0, kPoints + 9, 1.0f);
   const std::vector<ss::CandidateSegment> parts = {segment(0, 59, 2.0f), segment(60, 99, 3.0f)};
   ss::CompositeSegmentParams params;
@@ -218,17 +224,7 @@ TEST(CompositeSegments, TheStageTakesPartsFromCandidatesTheFilterDidNotKeep) {
 // the corner is no face running on. A path over such links does not make the boxes one body;
 // one over a flat face (steps of a few degrees) still does.
 TEST(CompositeSegments, APathThroughASmoothedConcaveCornerDoesNotJoinTheParts) {
-  // The corner 100..109 in neither part, linked to A at 55 and to B at 65 (as above).
-  std::vector<std::vector<int>> neighbours = chainNeighbours();
-  neighbours.resize(kPoints + 10);
-  for (int i = kPoints; i < kPoints + 10; ++i) {
-    if (i > kPoints) neighbours[i].push_back(i - 1);
-    if (i + 1 < kPoints + 10) neighbours[i].push_back(i + 1);
-  }
-  neighbours[55].push_back(kPoints);
-  neighbours[kPoints].push_back(55);
-  neighbours[kPoints + 9].push_back(65);
-  neighbours[65].push_back(kPoints + 9);
+  const std::vector<std::vector<int>> neighbours = chainWithCorner();
   const auto onCorner = [](int a, int b) { return std::max(a, b) >= kPoints; };
   // Every corner link concave, its normals `turn` degrees apart; the seam (59, 60) a sharp crease.
   const auto corner_turning = [&](float turn) {
