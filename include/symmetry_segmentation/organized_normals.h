@@ -12,8 +12,9 @@ namespace symmetry_segmentation {
 
 /// The points of the organized `frame` (height > 1) that `indices` names, in that order, each
 /// with the normal its pixel neighbourhood gives, oriented toward `viewpoint`, or NaN where it
-/// gives none (depth jumps, the image's border). `smoothing_pixels`: the window's size at 1 m (it
-/// grows with depth). Null when the frame is not organized.
+/// gives none (depth jumps, the image's border). `smoothing_pixels`: the window's size in pixels
+/// (PCL's depth-dependent growth adds only a tenth of a pixel per metre). Null when the frame is
+/// not organized.
 Cloud::Ptr pointsWithOrganizedNormals(const Cloud& frame, const std::vector<int>& indices,
                                       const Eigen::Vector3f& viewpoint, float smoothing_pixels);
 

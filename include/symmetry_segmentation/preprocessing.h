@@ -43,8 +43,8 @@ inline void describeParameters(ParameterList<PreprocessParams>& list) {
       .add("ransac_iterations", &P::ransac_iterations, 1, 1000000, "", "RANSAC iterations when the plane is estimated")
       .add("normal_radius", &P::normal_radius, 0.005, 0.5, "m", "radius for normal estimation when the cloud has none")
       .add("organized_normal_smoothing", &P::organized_normal_smoothing, 0.0, 100.0, "pixels",
-           "a camera frame without normals (organized) gets them from its pixel grid, over a window this wide at "
-           "1 m, before the voxel grid; 0: estimate them on the working cloud within normal_radius instead")
+           "a camera frame without normals (organized) gets them from its pixel grid, over a window this many "
+           "pixels wide, before the voxel grid; 0: estimate them on the working cloud within normal_radius instead")
       .add("max_range", &P::max_range, 0.0, 100.0, "m", "drop points farther than this from the sensor; 0 keeps all")
       .add("crop_to_support", &P::crop_to_support,
            "keep only points over the table's extent (the polygon of its points): walls, floor, background go")
