@@ -2,6 +2,7 @@
 // A dense copy of an OccupancyMap over a box, for the hot loops that classify millions of
 // reflected points: an octree search per query costs a tree walk, a grid cell one index. Same
 // answers as the map (cells are the map's own voxels); queries outside the box ask the map.
+// A map made from a depth image is not copied: it answers a query as fast as a cell would.
 
 #include <vector>
 

@@ -6,6 +6,7 @@
 
 #include <octomap/OcTree.h>
 
+#include "symmetry_segmentation/depth_image_occupancy.h"
 #include "symmetry_segmentation/errors.h"
 
 namespace symmetry_segmentation {
@@ -23,7 +24,13 @@ OccupancyMap::OccupancyMap(std::shared_ptr<const octomap::OcTree> tree) : tree_(
   if (!tree_) throw InputError("OccupancyMap needs a tree");
 }
 
+OccupancyMap::OccupancyMap(std::shared_ptr<const DepthImageOccupancy> depth_image)
+    : depth_image_(std::move(depth_image)) {
+  if (!depth_image_) throw InputError("OccupancyMap needs a depth image");
+}
+
 Occupancy OccupancyMap::classify(const Eigen::Vector3f& point) const {
+  if (depth_image_) return depth_image_->classify(point);
   if (!point.allFinite()) return Occupancy::Unknown;
   octomap::OcTreeKey key;
   if (!tree_->coordToKeyChecked(octomap::point3d(point.x(), point.y(), point.z()), key)) {
@@ -34,7 +41,9 @@ Occupancy OccupancyMap::classify(const Eigen::Vector3f& point) const {
   return tree_->isNodeOccupied(node) ? Occupancy::Occupied : Occupancy::Free;
 }
 
-double OccupancyMap::resolution() const { return tree_->getResolution(); }
+double OccupancyMap::resolution() const {
+  return depth_image_ ? depth_image_->surfaceThickness() : tree_->getResolution();
+}
 
 OccupancyMap OccupancyMap::fromRayCasting(const Cloud& cloud, const std::vector<Eigen::Vector3f>& origins,
                                           const RayCastOptions& options) {
@@ -69,6 +78,10 @@ OccupancyMap OccupancyMap::fromRayCasting(const Cloud& cloud, const std::vector<
 
 OccupancyMap occupancyForScene(const Scene& scene, const RayCastOptions& options) {
   if (scene.occupancy) return OccupancyMap(scene.occupancy);
+  if (options.from_depth_image && scene.cloud) {
+    auto depth_image = DepthImageOccupancy::fromOrganizedCloud(*scene.cloud, static_cast<float>(options.resolution));
+    if (depth_image) return OccupancyMap(std::move(depth_image));
+  }
   if (scene.sensor_origins.empty()) {
     throw InputError(scene.cloud_path, "no OctoMap and no sensor origin to ray-cast one from");
   }

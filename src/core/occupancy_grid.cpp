@@ -9,8 +9,9 @@ namespace symmetry_segmentation {
 
 OccupancyGrid::OccupancyGrid(const OccupancyMap& map, const Eigen::AlignedBox3f& box, std::size_t max_cells)
     : map_(map) {
+  if (!map.tree()) return;  // a depth image answers a query as fast as a grid would
   if (box.isEmpty() || !box.min().allFinite() || !box.max().allFinite()) return;
-  const octomap::OcTree& tree = map.tree();
+  const octomap::OcTree& tree = *map.tree();
   octomap::OcTreeKey low, high;
   if (!tree.coordToKeyChecked(octomap::point3d(box.min().x(), box.min().y(), box.min().z()), low) ||
       !tree.coordToKeyChecked(octomap::point3d(box.max().x(), box.max().y(), box.max().z()), high)) {
@@ -68,7 +69,7 @@ Occupancy OccupancyGrid::classify(const Eigen::Vector3f& point) const {
   if (cells_.empty() || !point.allFinite()) return map_.classify(point);
   octomap::OcTreeKey key;
   std::size_t index;
-  if (map_.tree().coordToKeyChecked(octomap::point3d(point.x(), point.y(), point.z()), key) && cellIndex(key, index)) {
+  if (map_.tree()->coordToKeyChecked(octomap::point3d(point.x(), point.y(), point.z()), key) && cellIndex(key, index)) {
     return cells_[index];
   }
   return map_.classify(point);

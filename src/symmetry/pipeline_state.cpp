@@ -32,6 +32,7 @@ PipelineState preparePipeline(const Scene& scene, const PreprocessParams& prepro
 
   RayCastOptions ray_cast;
   ray_cast.resolution = preprocessing.voxel_size;
+  ray_cast.from_depth_image = params.depth_image_occupancy;
   state.occupancy = std::make_unique<OccupancyMap>(occupancyForScene(scene, ray_cast));
   state.timing_ms.emplace_back("occupancy", stage.lap());
 

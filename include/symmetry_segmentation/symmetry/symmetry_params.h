@@ -380,6 +380,7 @@ inline void describeParameters(ParameterList<StrayColorParams>& list) {
 
 struct SymmetryParams {
   int threads = 0;
+  bool depth_image_occupancy = true;
   std::vector<std::string> stages = {"curves",  "curve_pairs", "upright",         "cut",          "refine",
                                      "islands", "footprints",  "cut",             "refine",       "filter",
                                      "island_segments",        "mirror_twins",    "composites",   "nested",
@@ -408,6 +409,9 @@ std::vector<std::string> stageListProblems(const std::vector<std::string>& stage
 
 inline void describeParameters(ParameterList<SymmetryParams>& list) {
   list.add("threads", &SymmetryParams::threads, 0, 1024, "", "worker threads for independent hypotheses; 0 = all cores")
+      .add("depth_image_occupancy", &SymmetryParams::depth_image_occupancy,
+           "a camera frame (organized cloud) without a map: free space straight from its depth image (in front of a "
+           "pixel's depth = free); false: ray-cast an OctoMap from the cloud")
       .add("stages", &SymmetryParams::stages,
            "what runs, in order (README, 'The symmetry method'); leave a stage out to switch it off")
       .rule([](const SymmetryParams& p) {
