@@ -102,6 +102,10 @@ TEST(DepthImageOccupancy, OnlyForOnePinholeCamerasImage) {
   for (std::size_t i = 50; i < dark.size(); ++i) dark.points[i].x = dark.points[i].y = dark.points[i].z = NAN;
   EXPECT_FALSE(occupancyOf(dark));
 
+  ss::Cloud bare_wall = frame;  // one plane fits many cameras: none is chosen
+  for (ss::PointT& p : bare_wall.points) p.getVector3fMap() /= p.z;
+  EXPECT_FALSE(occupancyOf(bare_wall));
+
   ss::Cloud collapsed = frame;  // every pixel saw the same point: no camera fits
   for (ss::PointT& p : collapsed.points) p.x = p.y = p.z = 0.5f;
   EXPECT_FALSE(occupancyOf(collapsed));

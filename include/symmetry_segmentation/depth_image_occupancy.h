@@ -10,6 +10,7 @@
 // moved into a robot's base frame works as is.
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -23,7 +24,8 @@ class DepthImageOccupancy {
  public:
   /// The occupancy of `frame` (organized: width x height pixels, NaN where nothing returned),
   /// or null when it is not one pinhole camera's image (unorganized, too few valid pixels, or
-  /// its points do not reproject onto their pixels within a pixel). A query within
+  /// its points do not reproject onto their pixels within a pixel) or the camera cannot be told
+  /// from it (every point on one plane: a bare wall or table). A query within
   /// `surface_thickness` of the measured depth along its ray is on the surface (occupied).
   static std::shared_ptr<const DepthImageOccupancy> fromOrganizedCloud(const Cloud& frame, float surface_thickness);
 
@@ -49,5 +51,9 @@ class DepthImageOccupancy {
   float thickness_ = 0.0f;
   float reprojection_error_ = 0.0f;
 };
+
+/// Where the camera of an organized frame was (its fitted optical centre, cloud frame), when
+/// the frame is one pinhole camera's image: a camera frame is its own viewpoint.
+std::optional<Eigen::Vector3f> cameraCenterOfFrame(const Cloud& frame);
 
 }  // namespace symmetry_segmentation

@@ -13,6 +13,8 @@ namespace {
 constexpr std::size_t kMinValidPixels = 100;
 constexpr std::size_t kTargetSamples = 4000;  // the fit is exact up to noise: a few thousand pixels do
 constexpr double kMaxReprojectionError = 1.0;  // pixels: beyond it the frame is no pinhole image
+// Relative to the largest: real frames give 1e-4 .. 1e-3, a bare plane 1e-17.
+constexpr double kMinSecondEigenvalue = 1e-6;
 
 struct PixelSample {
   Eigen::Vector3d point;
@@ -58,6 +60,9 @@ bool fitProjection(const std::vector<PixelSample>& samples, Eigen::Matrix<double
   }
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 12, 12>> solver(normal_matrix);
   if (solver.info() != Eigen::Success) return false;
+  // One camera fits: a second near-null direction means many do (every point on one plane).
+  const auto& eigenvalues = solver.eigenvalues();
+  if (!(eigenvalues(1) > kMinSecondEigenvalue * eigenvalues(11))) return false;
   const Eigen::Matrix<double, 12, 1> p = solver.eigenvectors().col(0);  // smallest eigenvalue
   Eigen::Matrix<double, 3, 4> normalised;
   normalised << p.segment<4>(0).transpose(), p.segment<4>(4).transpose(), p.segment<4>(8).transpose();
@@ -140,6 +145,12 @@ Occupancy DepthImageOccupancy::classify(const Eigen::Vector3f& point) const {
   if (range < measured - thickness_) return Occupancy::Free;
   if (range <= measured + thickness_) return Occupancy::Occupied;
   return Occupancy::Unknown;  // behind the surface the pixel saw
+}
+
+std::optional<Eigen::Vector3f> cameraCenterOfFrame(const Cloud& frame) {
+  const auto occupancy = DepthImageOccupancy::fromOrganizedCloud(frame, 0.0f);
+  if (!occupancy) return std::nullopt;
+  return occupancy->cameraCenter();
 }
 
 }  // namespace symmetry_segmentation

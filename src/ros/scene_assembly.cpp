@@ -1,6 +1,7 @@
 #include "symmetry_segmentation/ros/scene_assembly.h"
 
 #include "symmetry_segmentation/SegmentCloud.h"
+#include "symmetry_segmentation/depth_image_occupancy.h"
 #include "symmetry_segmentation/errors.h"
 #include "symmetry_segmentation/point_validity.h"
 #include "symmetry_segmentation/ros/cloud_conversion.h"
@@ -35,7 +36,13 @@ Scene assembleScene(const sensor_msgs::PointCloud2& cloud, const SceneInputs& in
   }
   // The sensor origin is passed on even with a map: the core orients normals and the table
   // plane toward it (without one it votes, which a large table patch can get wrong).
-  if (inputs.sensor_origin) scene.sensor_origins.push_back(*inputs.sensor_origin);
+  if (inputs.sensor_origin) {
+    scene.sensor_origins.push_back(*inputs.sensor_origin);
+  } else if (!inputs.occupancy && !inputs.occupancy_for_region) {
+    // A camera's organized cloud (openni2, realsense2) needs neither a sensor frame nor a map:
+    // the camera is fitted to its pixels, and its depth image is the occupancy.
+    if (const auto camera = cameraCenterOfFrame(*scene.cloud)) scene.sensor_origins.push_back(*camera);
+  }
   scene.table_plane = inputs.table_plane;
   scene.up = inputs.up;
   if (inputs.occupancy) {
@@ -49,7 +56,7 @@ Scene assembleScene(const sensor_msgs::PointCloud2& cloud, const SceneInputs& in
       throw RequestError(Response::INVALID_INPUT, error.what());
     }
   }
-  if (!scene.occupancy && !inputs.sensor_origin) {
+  if (!scene.occupancy && scene.sensor_origins.empty()) {
     throw RequestError(Response::NO_OCCUPANCY,
                        "no OctoMap received, and no sensor frame or cloud viewpoint to ray-cast one from");
   }

@@ -332,6 +332,30 @@ TEST(CloudConversion, RegionOfInterestIsValidatedAndContains) {
   EXPECT_THROW(ss::regionOfInterest(Eigen::Vector3f(nan, 0, 0), Eigen::Vector3f(0, 1, 1)), ss::InputError);
 }
 
+// A camera's organized cloud without a sensor frame or a map: the camera fitted to its pixels
+// is the viewpoint (and its depth image the occupancy). The same points unorganized are not.
+TEST(SceneAssembly, ACameraFrameIsItsOwnViewpoint) {
+  const Eigen::Vector3f camera(0.2f, -0.1f, 0.3f);  // where the camera sits in the cloud's frame
+  pcl::PointCloud<pcl::PointXYZ> frame(40, 30);
+  for (int v = 0; v < 30; ++v) {
+    for (int u = 0; u < 40; ++u) {
+      const float depth = 1.2f - (std::abs(u - 20) < 6 && std::abs(v - 15) < 6 ? 0.2f : 0.0f);  // a box on a wall
+      const Eigen::Vector3f point = camera + depth * Eigen::Vector3f((u - 20) / 40.0f, (v - 15) / 40.0f, 1.0f);
+      frame.at(u, v) = pcl::PointXYZ(point.x(), point.y(), point.z());
+    }
+  }
+  sensor_msgs::PointCloud2 message;
+  pcl::toROSMsg(frame, message);
+  message.header.frame_id = "camera";
+  const ss::Scene scene = ss::assembleScene(message, ss::SceneInputs{});
+  ASSERT_EQ(scene.sensor_origins.size(), 1u);
+  EXPECT_LT((scene.sensor_origins.front() - camera).norm(), 1e-3f);
+
+  std::vector<Eigen::Vector3f> points;
+  for (const auto& p : frame.points) points.push_back(p.getVector3fMap());
+  EXPECT_EQ(statusOf(xyzMessage(points), ss::SceneInputs{}), Response::NO_OCCUPANCY);
+}
+
 TEST(SceneAssembly, StatusPerFailureCause) {
   ss::SceneInputs inputs;
   inputs.sensor_origin = Eigen::Vector3f::Zero();

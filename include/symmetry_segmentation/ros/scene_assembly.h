@@ -52,7 +52,8 @@ constexpr double kMapMargin = 0.25;
 
 /// The scene the core segments. Throws RequestError with INVALID_INPUT (empty cloud, no x/y/z,
 /// bad layout, no finite point, bad region of interest, a map that cannot be moved into the
-/// processing frame) or NO_OCCUPANCY (no map and no origin).
+/// processing frame) or NO_OCCUPANCY (no map and no origin: none given and the cloud is no
+/// camera frame whose camera can be fitted to its pixels).
 Scene assembleScene(const sensor_msgs::PointCloud2& cloud, const SceneInputs& inputs);
 
 }  // namespace symmetry_segmentation
