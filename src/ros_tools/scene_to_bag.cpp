@@ -6,6 +6,7 @@
 
 #include <geometry_msgs/TransformStamped.h>
 #include <octomap/OcTree.h>
+#include <pcl/common/io.h>
 #include <pcl/console/print.h>
 #include <pcl_conversions/pcl_conversions.h>
 #include <pcl_msgs/ModelCoefficients.h>
@@ -25,7 +26,8 @@ const char* const kUsage =
     "usage: scene_to_bag <scene> --output FILE.bag [--clouds N] [--rate HZ] [--voxel M] [--frame F]\n"
     "                    [--camera-frame F] [--cloud-topic T] [--octomap-topic T] [--plane-topic T]\n"
     "                    [--full-octomap]\n"
-    "  <scene>          scene directory (cloud.ply, occupancy.bt, scene_info.yaml) or cloud file\n"
+    "  <scene>          scene directory (cloud.ply, occupancy.bt, scene_info.yaml) or cloud file;\n"
+    "                   without an OctoMap (a camera frame) no map is written\n"
     "  --clouds         cloud messages to write (default 3), one every 1/rate s\n"
     "  --rate           cloud rate in Hz (default 1)\n"
     "  --voxel          downsample the cloud to this leaf size in m first (default 0: keep all)\n"
@@ -106,7 +108,6 @@ int main(int argc, char** argv) {
   const Options options = parse(argc, argv);
   try {
     const ss::Scene scene = ss::loadScene(options.scene, {true, false});
-    if (!scene.occupancy) throw ss::InputError(options.scene, "scene has no OctoMap (occupancy.bt) to write");
     ss::Cloud cloud = *scene.cloud;
     if (options.voxel > 0.0) {
       std::vector<int> all;
@@ -135,11 +136,14 @@ int main(int argc, char** argv) {
     tf.transforms.push_back(camera);
     bag.write("/tf_static", start, tf, latched<tf2_msgs::TFMessage>());
 
-    ss::OctomapMessage map = options.full_octomap ? ss::fullMessageFromTree(*scene.occupancy)
-                                                  : ss::binaryMessageFromTree(*scene.occupancy);
-    map.header.frame_id = options.frame;
-    map.header.stamp = start;
-    bag.write(options.octomap_topic, start, map, latched<ss::OctomapMessage>());
+    // A single view (a camera frame) has no map: the node takes free space from its depth image.
+    if (scene.occupancy) {
+      ss::OctomapMessage map = options.full_octomap ? ss::fullMessageFromTree(*scene.occupancy)
+                                                    : ss::binaryMessageFromTree(*scene.occupancy);
+      map.header.frame_id = options.frame;
+      map.header.stamp = start;
+      bag.write(options.octomap_topic, start, map, latched<ss::OctomapMessage>());
+    }
 
     if (scene.table_plane && !options.plane_topic.empty()) {
       pcl_msgs::ModelCoefficients plane;
@@ -150,7 +154,13 @@ int main(int argc, char** argv) {
     }
 
     sensor_msgs::PointCloud2 message;
-    pcl::toROSMsg(cloud, message);
+    if (scene.has_normals) {
+      pcl::toROSMsg(cloud, message);
+    } else {  // as a camera driver sends it: no normal fields (the node would take them as given)
+      pcl::PointCloud<pcl::PointXYZRGB> plain;
+      pcl::copyPointCloud(cloud, plain);
+      pcl::toROSMsg(plain, message);
+    }
     message.header.frame_id = options.frame;
     for (int i = 0; i < options.clouds; ++i) {
       const ros::Time stamp = start + ros::Duration(0.05 + i / options.rate);
@@ -160,7 +170,8 @@ int main(int argc, char** argv) {
     }
     bag.close();
     std::cout << "wrote " << options.output << ": " << options.clouds << " clouds of " << cloud.size()
-              << " points on " << options.cloud_topic << ", OctoMap on " << options.octomap_topic
+              << " points (" << cloud.width << " x " << cloud.height << ") on " << options.cloud_topic
+              << (scene.occupancy ? ", OctoMap on " + options.octomap_topic : ", no OctoMap (single view)")
               << (scene.table_plane && !options.plane_topic.empty() ? ", table plane on " + options.plane_topic : "")
               << ", tf " << options.frame << " -> " << options.camera_frame << "\n";
     return 0;

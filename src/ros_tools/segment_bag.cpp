@@ -37,8 +37,9 @@ const char* const kUsage =
     "                 tf as the node's ~up_frame: the table is then a plane facing up\n"
     "  --prefix       namespace of the output topics (default /segmentation):\n"
     "                 P/objects, P/segmented_cloud, P/symmetry_markers\n"
-    "  Clouds are segmented with the latest octomap_msgs/Octomap in their frame; without one,\n"
-    "  occupancy is ray-cast from the cloud frame's origin. The latest pcl_msgs/ModelCoefficients\n"
+    "  Clouds are segmented with the latest octomap_msgs/Octomap in their frame; without one, a\n"
+    "  camera's organized cloud is its own map (its depth image), and other clouds get one\n"
+    "  ray-cast from the cloud frame's origin. The latest pcl_msgs/ModelCoefficients\n"
     "  before a cloud is its table plane (moved into the cloud's frame through the bag's tf);\n"
     "  without one the table is estimated. Exit code 1 if any cloud failed.\n";
 

@@ -13,6 +13,7 @@
 #include <boost/filesystem.hpp>
 #include <pcl_msgs/ModelCoefficients.h>
 #include <rosbag/bag.h>
+#include <sensor_msgs/PointCloud2.h>
 #include <rosbag/view.h>
 #include <sensor_msgs/PointCloud2.h>
 
@@ -118,6 +119,52 @@ TEST(BagTools, SceneToBagThenSegmentBag) {
   EXPECT_EQ(clouds.size(), 2u);
   rosbag::View markers(bag, rosbag::TopicQuery("/segmentation/symmetry_markers"));
   EXPECT_EQ(markers.size(), 2u);
+  fs::remove_all(dir);
+}
+
+// A single camera frame (organized, no normals, no map) becomes a bag as a camera driver would
+// send it - organized, without normal fields, no OctoMap - and segments from it alone.
+TEST(BagTools, ACameraFrameWithoutAMap) {
+  const fs::path dir = fs::temp_directory_path() / fs::unique_path("bag_camera_%%%%%%");
+  fs::create_directories(dir);
+  std::string output;
+  ASSERT_EQ(run(std::string(TOOLS_DIR) + "/make_scene --kind isolated --seed 43 --single-view kinect --output " +
+                    (dir / "frame").string(),
+                &output),
+            0)
+      << output;
+  const std::string frame_bag = (dir / "frame.bag").string();
+  ASSERT_EQ(run(std::string(TOOLS_DIR) + "/scene_to_bag " + (dir / "frame").string() + " --output " + frame_bag +
+                    " --clouds 2 --rate 30",
+                &output),
+            0)
+      << output;
+  EXPECT_NE(output.find("(640 x 480)"), std::string::npos) << output;
+  EXPECT_NE(output.find("no OctoMap"), std::string::npos) << output;
+  {
+    rosbag::Bag bag(frame_bag, rosbag::bagmode::Read);
+    rosbag::View view(bag);
+    std::set<std::string> topics;
+    for (const auto* connection : view.getConnections()) topics.insert(connection->topic);
+    EXPECT_EQ(topics, (std::set<std::string>{"/kinfu/cloud", "/tf_static"}));
+    for (const auto& instance : view) {
+      if (auto cloud = instance.instantiate<sensor_msgs::PointCloud2>()) {
+        EXPECT_EQ(cloud->width, 640u);
+        EXPECT_EQ(cloud->height, 480u);
+        for (const auto& field : cloud->fields) EXPECT_NE(field.name, "normal_x");
+      }
+    }
+  }
+  const std::string result_bag = (dir / "segmented.bag").string();
+  ASSERT_EQ(run(std::string(TOOLS_DIR) + "/segment_bag " + frame_bag + " --output " + result_bag, &output), 0)
+      << output;
+  EXPECT_NE(output.find("segmented 2 clouds (0 failed)"), std::string::npos) << output;
+  rosbag::Bag bag(result_bag, rosbag::bagmode::Read);
+  rosbag::View objects(bag, rosbag::TopicQuery("/segmentation/objects"));
+  ASSERT_EQ(objects.size(), 2u);
+  for (const auto& instance : objects) {
+    EXPECT_GE(instance.instantiate<ss::SegmentedObjectArray>()->objects.size(), 2u) << "5 objects on the table";
+  }
   fs::remove_all(dir);
 }
 
