@@ -45,6 +45,7 @@ const std::set<std::string>& interfaceParameterNames() {
                                               "transform_timeout",
                                               "service_threads",
                                               "max_input_points",
+                                              "max_rate",
                                               "diagnostic_period",
                                               "lazy",
                                               "verbose_connection",
@@ -134,6 +135,7 @@ void SegmentationNodelet::loadInterfaceParameters() {
   readParameter(pnh, "transform_timeout", transform_timeout_, "number");
   readParameter(pnh, "max_input_points", max_input_points_, "integer");
   readParameter(pnh, "service_threads", service_threads_, "integer");
+  readParameter(pnh, "max_rate", max_rate_, "number");
   if (!(transform_timeout_ >= 0.0)) {
     NODELET_ERROR("~transform_timeout %g is not a duration; using 0.1", transform_timeout_);
     transform_timeout_ = 0.1;
@@ -141,6 +143,10 @@ void SegmentationNodelet::loadInterfaceParameters() {
   if (service_threads_ < 1) {
     NODELET_ERROR("~service_threads %d is less than 1; using 1", service_threads_);
     service_threads_ = 1;
+  }
+  if (!(max_rate_ >= 0.0)) {
+    NODELET_ERROR("~max_rate %g is not a rate; using 0 (no limit)", max_rate_);
+    max_rate_ = 0.0;
   }
   if (max_input_points_ < 0) {
     NODELET_ERROR("~max_input_points %d is negative; using 0 (no limit)", max_input_points_);
@@ -274,6 +280,10 @@ void SegmentationNodelet::onInit() {
       kMapMargin);
   worker_ = std::make_unique<NewestItemWorker<sensor_msgs::PointCloud2ConstPtr>>(
       [this](sensor_msgs::PointCloud2ConstPtr& cloud) { segmentFromTopic(cloud); });
+  if (max_rate_ > 0.0) {
+    worker_->setMinPeriod(std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+        std::chrono::duration<double>(1.0 / max_rate_)));
+  }
 
   // Lazy (NodeletLazy): ~input is subscribed while an output has a subscriber (continuous mode).
   objects_publisher_ = advertise<SegmentedObjectArray>(*pnh_, "objects", 1);
@@ -598,6 +608,7 @@ void SegmentationNodelet::diagnose(diagnostic_updater::DiagnosticStatusWrapper& 
   status.addf("last duration (ms)", "%.1f", s.last_duration_ms);
   status.add("last status", s.any ? statusName(s.last_status) : std::string("none"));
   status.add("dropped clouds", dropped);
+  status.addf("max rate (Hz, 0: none)", "%g", max_rate_);
 }
 
 bool SegmentationNodelet::segmentService(SegmentCloud::Request& request, SegmentCloud::Response& response) {

@@ -151,6 +151,34 @@ TEST(NewestItemWorker, ClearWithdrawsTheWaitingItemAndStopJoins) {
   EXPECT_EQ(gate.seen, (std::vector<int>{1}));
 }
 
+// ~max_rate: a fast stream is handled at most once per period, always its newest item. The
+// upper bound holds however loaded the machine is; the lower one only asks that it runs at all.
+TEST(NewestItemWorker, AMinimumPeriodLimitsTheRateAndKeepsTheNewest) {
+  std::mutex mutex;
+  std::vector<int> seen;
+  ss::NewestItemWorker<int> worker([&](int& item) {
+    std::lock_guard<std::mutex> lock(mutex);
+    seen.push_back(item);
+  });
+  worker.setMinPeriod(std::chrono::milliseconds(200));
+  const auto start = std::chrono::steady_clock::now();
+  int pushed = 0;
+  while (std::chrono::steady_clock::now() - start < std::chrono::milliseconds(1000)) {
+    worker.push(pushed++);
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  const int last = pushed - 1;
+  ASSERT_TRUE(waitFor([&] { return !worker.busy(); }));
+  const auto elapsed = std::chrono::steady_clock::now() - start;
+  std::lock_guard<std::mutex> lock(mutex);
+  const auto periods = std::chrono::duration_cast<std::chrono::milliseconds>(elapsed).count() / 200;
+  EXPECT_LE(static_cast<long>(seen.size()), periods + 1) << "more than one item per period";
+  EXPECT_GE(seen.size(), 2u);
+  EXPECT_GT(pushed, 20);
+  EXPECT_EQ(seen.back(), last) << "the newest item is the one handled";
+  EXPECT_EQ(worker.dropped() + worker.handled(), static_cast<std::size_t>(pushed));
+}
+
 namespace {
 
 std::shared_ptr<octomap::OcTree> smallMap() {

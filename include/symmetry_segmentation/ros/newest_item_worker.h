@@ -2,8 +2,11 @@
 // A worker thread that handles the newest item only: at most one item waits; a newer one
 // replaces it (the replaced one counts as dropped). The node's continuous mode runs its
 // segmentation on one of these, so a slow segmentation never builds up a backlog of clouds.
+// With a minimum period, items start at most that often (the node's ~max_rate): a 30 Hz
+// camera need not keep a core busy; what arrives meanwhile replaces the waiting item.
 // ROS-free (std only): unit-tested without a master.
 
+#include <chrono>
 #include <condition_variable>
 #include <cstddef>
 #include <functional>
@@ -36,6 +39,15 @@ class NewestItemWorker {
       pending_ = std::move(item);
     }
     changed_.notify_one();
+  }
+
+  /// Items start at least `period` apart (zero: as soon as the last one is done).
+  void setMinPeriod(std::chrono::steady_clock::duration period) {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      min_period_ = period;
+    }
+    changed_.notify_all();
   }
 
   /// Forgets the waiting item, if any (not counted as dropped: it was withdrawn, not overtaken).
@@ -77,9 +89,18 @@ class NewestItemWorker {
       std::optional<Item> item;
       {
         std::unique_lock<std::mutex> lock(mutex_);
-        changed_.wait(lock, [this] { return stopping_ || pending_.has_value(); });
+        while (!stopping_) {
+          if (!pending_) {
+            changed_.wait(lock);
+            continue;
+          }
+          const auto allowed = last_start_ + min_period_;
+          if (std::chrono::steady_clock::now() >= allowed) break;
+          changed_.wait_until(lock, allowed);  // a newer item may replace this one meanwhile
+        }
         if (stopping_) return;
         item.swap(pending_);
+        last_start_ = std::chrono::steady_clock::now();
         running_ = true;
       }
       handler_(*item);
@@ -100,6 +121,8 @@ class NewestItemWorker {
   bool running_ = false;
   std::size_t dropped_ = 0;
   std::size_t handled_ = 0;
+  std::chrono::steady_clock::duration min_period_{0};
+  std::chrono::steady_clock::time_point last_start_{};
   std::thread thread_;  // last: starts after every other member exists
 };
 

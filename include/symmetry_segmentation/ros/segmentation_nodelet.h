@@ -120,6 +120,7 @@ class SegmentationNodelet : public nodelet_topic_tools::NodeletLazy {
   std::string up_frame_;  ///< Empty: gravity unknown.
   double transform_timeout_ = 0.1;
   int max_input_points_ = 3000000;
+  double max_rate_ = 0.0;  ///< Continuous mode: segmentations start at most this often (Hz); 0: no limit.
   int service_threads_ = 2;
   std::optional<GivenPlane> plane_parameter_;
 
