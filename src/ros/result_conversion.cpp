@@ -1,5 +1,6 @@
 #include "symmetry_segmentation/ros/result_conversion.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -85,19 +86,37 @@ SegmentedObjectArray objectsMessage(const Cloud& cloud, const SegmentationResult
   return message;
 }
 
-sensor_msgs::PointCloud2 labelledCloudMessage(const Cloud& cloud, const SegmentationResult& result,
-                                              const std_msgs::Header& header) {
-  const pcl::PointCloud<pcl::PointXYZRGB> colored = colorBySegment(cloud, result.segments);
+namespace {
+
+/// Per cloud point: the 1-based segment holding it (the first one wins), 0 for none.
+std::vector<uint32_t> pointLabels(const Cloud& cloud, const SegmentationResult& result) {
   std::vector<uint32_t> labels(cloud.size(), 0);
-  for (std::size_t s = result.segments.size(); s-- > 0;) {  // first segment holding a point wins
+  for (std::size_t s = result.segments.size(); s-- > 0;) {
     for (int index : result.segments[s].indices) {
       if (index >= 0 && static_cast<std::size_t>(index) < labels.size()) labels[index] = static_cast<uint32_t>(s + 1);
     }
   }
+  return labels;
+}
+
+}  // namespace
+
+sensor_msgs::PointCloud2 labelledCloudMessage(const Cloud& cloud, const SegmentationResult& result,
+                                              const std_msgs::Header& header) {
+  const pcl::PointCloud<pcl::PointXYZRGB> colored = colorBySegment(cloud, result.segments);
+  const std::vector<uint32_t> labels = pointLabels(cloud, result);
+  const bool organized = cloud.isOrganized();
   pcl::PointCloud<pcl::PointXYZRGBL> labelled;
   labelled.reserve(cloud.size());
   for (std::size_t i = 0; i < cloud.size(); ++i) {
-    if (!isUsablePoint(cloud[i])) continue;
+    if (!isUsablePoint(cloud[i])) {
+      if (!organized) continue;
+      pcl::PointXYZRGBL hole;  // the camera saw nothing here: the pixel stays, without a point
+      hole.x = hole.y = hole.z = std::numeric_limits<float>::quiet_NaN();
+      hole.label = 0;
+      labelled.push_back(hole);
+      continue;
+    }
     pcl::PointXYZRGBL point;
     point.x = cloud[i].x;
     point.y = cloud[i].y;
@@ -108,10 +127,35 @@ sensor_msgs::PointCloud2 labelledCloudMessage(const Cloud& cloud, const Segmenta
     point.label = labels[i];
     labelled.push_back(point);
   }
+  if (organized) {
+    labelled.width = cloud.width;
+    labelled.height = cloud.height;
+    labelled.is_dense = false;
+  }
   sensor_msgs::PointCloud2 message;
   pcl::toROSMsg(labelled, message);
   message.header = header;
   return message;
+}
+
+std::optional<sensor_msgs::Image> labelImageMessage(const Cloud& cloud, const SegmentationResult& result,
+                                                    const std_msgs::Header& header) {
+  if (!cloud.isOrganized()) return std::nullopt;
+  const std::vector<uint32_t> labels = pointLabels(cloud, result);
+  sensor_msgs::Image image;
+  image.header = header;
+  image.width = cloud.width;
+  image.height = cloud.height;
+  image.encoding = "mono16";
+  image.is_bigendian = 0;
+  image.step = 2 * image.width;
+  image.data.resize(static_cast<std::size_t>(image.step) * image.height);
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    const uint16_t label = static_cast<uint16_t>(std::min<uint32_t>(labels[i], 65535u));
+    image.data[2 * i] = static_cast<uint8_t>(label & 0xff);  // little endian
+    image.data[2 * i + 1] = static_cast<uint8_t>(label >> 8);
+  }
+  return image;
 }
 
 }  // namespace symmetry_segmentation

@@ -289,6 +289,7 @@ void SegmentationNodelet::onInit() {
   objects_publisher_ = advertise<SegmentedObjectArray>(*pnh_, "objects", 1);
   labelled_publisher_ = advertise<sensor_msgs::PointCloud2>(*pnh_, "segmented_cloud", 1);
   markers_publisher_ = advertise<visualization_msgs::MarkerArray>(*pnh_, "symmetry_markers", 1);
+  label_image_publisher_ = advertise<sensor_msgs::Image>(*pnh_, "label_image", 1);
   // The service runs on threads of its own, so long segmentations never block the subscriber
   // callbacks (nor other nodelets of the manager).
   ros::NodeHandle service_nh(*pnh_);
@@ -316,7 +317,7 @@ void SegmentationNodelet::onInit() {
 
 bool SegmentationNodelet::hasOutputSubscribers() const {
   return objects_publisher_.getNumSubscribers() > 0 || labelled_publisher_.getNumSubscribers() > 0 ||
-         markers_publisher_.getNumSubscribers() > 0;
+         markers_publisher_.getNumSubscribers() > 0 || label_image_publisher_.getNumSubscribers() > 0;
 }
 
 bool SegmentationNodelet::inputWanted() const {
@@ -543,6 +544,10 @@ SegmentationNodelet::Outcome SegmentationNodelet::process(const sensor_msgs::Poi
     }
     if (markers_publisher_.getNumSubscribers() > 0) {
       markers_publisher_.publish(symmetryMarkers(*scene.cloud, result, header));
+    }
+    if (label_image_publisher_.getNumSubscribers() > 0) {
+      // In the camera's own frame and stamp: the image lines up with the camera's image.
+      if (auto image = labelImageMessage(*scene.cloud, result, cloud.header)) label_image_publisher_.publish(*image);
     }
     outcome.timings.emplace_back("prepare", prepare_ms);
     for (const auto& stage : result.timing_ms) {

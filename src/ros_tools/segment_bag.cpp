@@ -36,7 +36,8 @@ const char* const kUsage =
     "  --up-frame     a frame whose z axis points up (base_link, odom, map), looked up in the bag's\n"
     "                 tf as the node's ~up_frame: the table is then a plane facing up\n"
     "  --prefix       namespace of the output topics (default /segmentation):\n"
-    "                 P/objects, P/segmented_cloud, P/symmetry_markers\n"
+    "                 P/objects, P/segmented_cloud, P/symmetry_markers (and P/label_image,\n"
+    "                 mono16, for a camera's organized cloud)\n"
     "  Clouds are segmented with the latest octomap_msgs/Octomap in their frame; without one, a\n"
     "  camera's organized cloud is its own map (its depth image), and other clouds get one\n"
     "  ray-cast from the cloud frame's origin. The latest pcl_msgs/ModelCoefficients\n"
@@ -177,6 +178,9 @@ int main(int argc, char** argv) {
                      ss::labelledCloudMessage(*scene.cloud, result, header));
         output.write(options.prefix + "/symmetry_markers", instance.getTime(),
                      ss::symmetryMarkers(*scene.cloud, result, header));
+        if (auto image = ss::labelImageMessage(*scene.cloud, result, header)) {
+          output.write(options.prefix + "/label_image", instance.getTime(), *image);
+        }
         std::cout << "cloud at " << cloud->header.stamp << " (" << instance.getTopic() << "): "
                   << result.segments.size() << " objects";
         for (const auto& [name, count] : result.counts) std::cout << ", " << name << " " << count;

@@ -471,6 +471,49 @@ TEST(ResultConversion, LabelledCloudHasLabelsAndSegmentColours) {
   EXPECT_EQ(labelled[3].b, second.z());
 }
 
+// A camera's organized cloud comes back in its layout (holes kept), with a mono16 label image
+// of the same pixels; an unorganized cloud gets no image.
+TEST(ResultConversion, OrganizedCloudKeepsItsLayoutAndGetsALabelImage) {
+  ss::Cloud cloud(3, 2);  // pixels 0..5, row-major
+  for (int i = 0; i < 6; ++i) cloud[i] = point(i, 0, 1);
+  cloud[4].x = kNaN;  // the camera saw nothing there
+  ss::SegmentationResult result;
+  result.segments.resize(2);
+  result.segments[0].indices = {1, 2};
+  result.segments[1].indices = {5};
+  std_msgs::Header header;
+  header.frame_id = "camera_rgb_optical_frame";
+  const auto message = ss::labelledCloudMessage(cloud, result, header);
+  EXPECT_EQ(message.width, 3u);
+  EXPECT_EQ(message.height, 2u);
+  pcl::PointCloud<pcl::PointXYZRGBL> labelled;
+  pcl::fromROSMsg(message, labelled);
+  ASSERT_EQ(labelled.size(), 6u);
+  EXPECT_TRUE(std::isnan(labelled[4].x));
+  EXPECT_EQ(labelled[4].label, 0u);
+  EXPECT_EQ(labelled[2].label, 1u);
+  EXPECT_EQ(labelled[5].label, 2u);
+  EXPECT_FLOAT_EQ(labelled[5].x, 5.0f);
+
+  const auto image = ss::labelImageMessage(cloud, result, header);
+  ASSERT_TRUE(image);
+  EXPECT_EQ(image->encoding, "mono16");
+  EXPECT_EQ(image->width, 3u);
+  EXPECT_EQ(image->height, 2u);
+  EXPECT_EQ(image->step, 6u);
+  EXPECT_EQ(image->header.frame_id, "camera_rgb_optical_frame");
+  ASSERT_EQ(image->data.size(), 12u);
+  const std::vector<uint16_t> expected = {0, 1, 1, 0, 0, 2};
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(image->data[2 * i] | (image->data[2 * i + 1] << 8), expected[i]) << "pixel " << i;
+  }
+
+  ss::Cloud unorganized = cloud;
+  unorganized.width = 6;
+  unorganized.height = 1;
+  EXPECT_FALSE(ss::labelImageMessage(unorganized, result, header));
+}
+
 TEST(MarkerConversion, DeleteAllThenPlanePatchArrowAndText) {
   const ss::Cloud cloud = boxCloud();  // x in [0.9, 1.1], y in [1.95, 2.05], z in [2.975, 3.025]
   std::vector<int> all(cloud.size());

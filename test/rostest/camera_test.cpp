@@ -1,7 +1,8 @@
 // rostest: one RGB-D camera through launch/camera.launch. A generated Kinect frame (organized,
 // no normals, no map, no sensor frame) is published at 30 Hz, as a camera driver does: objects
-// come out, no backlog builds up (the node works on the newest frame, at most one waits), and
-// the rate the node keeps is printed.
+// come out, no backlog builds up (the node works on the newest frame, at most one waits), the
+// labelled cloud keeps the camera's layout and a label image lines up with it, and the rate the
+// node keeps is printed.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,7 +14,10 @@
 #include <pcl/point_types.h>
 #include <pcl_conversions/pcl_conversions.h>
 #include <ros/ros.h>
+#include <sensor_msgs/Image.h>
 #include <sensor_msgs/PointCloud2.h>
+
+#include <set>
 
 #include "symmetry_segmentation/SegmentedObjectArray.h"
 #include "symmetry_segmentation/synthetic/scene_generator.h"
@@ -58,6 +62,18 @@ TEST(OneCamera, ThirtyHertzFramesGiveObjectsWithoutABacklog) {
         std::lock_guard<std::mutex> lock(mutex);
         results.push_back({message->header.stamp, ros::WallTime::now(), message->objects.size()});
       });
+  sensor_msgs::Image::ConstPtr label_image;
+  sensor_msgs::PointCloud2::ConstPtr labelled_cloud;
+  ros::Subscriber images = nh.subscribe<sensor_msgs::Image>(
+      "/segmentation/label_image", 1, [&](const sensor_msgs::Image::ConstPtr& message) {
+        std::lock_guard<std::mutex> lock(mutex);
+        label_image = message;
+      });
+  ros::Subscriber clouds = nh.subscribe<sensor_msgs::PointCloud2>(
+      "/segmentation/segmented_cloud", 1, [&](const sensor_msgs::PointCloud2::ConstPtr& message) {
+        std::lock_guard<std::mutex> lock(mutex);
+        labelled_cloud = message;
+      });
   ros::Publisher camera = nh.advertise<sensor_msgs::PointCloud2>("/camera/depth_registered/points", 1);
   ros::AsyncSpinner spinner(1);
   spinner.start();
@@ -97,6 +113,20 @@ TEST(OneCamera, ThirtyHertzFramesGiveObjectsWithoutABacklog) {
   // the last result seconds behind.
   const double allowed = 2.5 * median_interval + 0.5;
   for (double latency : latencies) EXPECT_LT(latency, allowed);
+
+  ASSERT_TRUE(labelled_cloud);
+  EXPECT_EQ(labelled_cloud->width, 640u);
+  EXPECT_EQ(labelled_cloud->height, 480u);
+  ASSERT_TRUE(label_image);
+  EXPECT_EQ(label_image->encoding, "mono16");
+  EXPECT_EQ(label_image->width, 640u);
+  EXPECT_EQ(label_image->height, 480u);
+  EXPECT_EQ(label_image->header.frame_id, "camera_rgb_optical_frame");
+  std::set<int> labels;
+  for (std::size_t i = 0; i + 1 < label_image->data.size(); i += 2) {
+    labels.insert(label_image->data[i] | (label_image->data[i + 1] << 8));
+  }
+  EXPECT_GE(labels.size(), 3u) << "no object (0) and at least two objects";
 }
 
 int main(int argc, char** argv) {

@@ -1,9 +1,12 @@
 #pragma once
-// A core SegmentationResult -> the node's messages: the object list and the labelled cloud.
+// A core SegmentationResult -> the node's messages: the object list, the labelled cloud and,
+// for a camera's organized cloud, the label image.
 
+#include <optional>
 #include <vector>
 
 #include <Eigen/Geometry>
+#include <sensor_msgs/Image.h>
 #include <sensor_msgs/PointCloud2.h>
 #include <std_msgs/Header.h>
 
@@ -28,7 +31,14 @@ SegmentedObjectArray objectsMessage(const Cloud& cloud, const SegmentationResult
 
 /// Every finite input point with x y z rgb label: label k (1-based) and segment k's colour for
 /// points of segment k (the first segment holding a point wins), label 0 and grey for the rest.
+/// An organized cloud keeps its layout (width x height, NaN where the camera saw nothing).
 sensor_msgs::PointCloud2 labelledCloudMessage(const Cloud& cloud, const SegmentationResult& result,
                                               const std_msgs::Header& header);
+
+/// For an organized cloud: a mono16 image of its width x height, pixel = label as in the
+/// labelled cloud (0: no object; labels above 65535 saturate), aligned with the camera image the
+/// cloud was made from, as UOIS-style nodes publish it. Nothing for an unorganized cloud.
+std::optional<sensor_msgs::Image> labelImageMessage(const Cloud& cloud, const SegmentationResult& result,
+                                                    const std_msgs::Header& header);
 
 }  // namespace symmetry_segmentation

@@ -143,6 +143,7 @@ class SegmentationNodelet : public nodelet_topic_tools::NodeletLazy {
   ros::Publisher objects_publisher_;
   ros::Publisher labelled_publisher_;
   ros::Publisher markers_publisher_;
+  ros::Publisher label_image_publisher_;  ///< mono16 labels, organized clouds only.
   // ~segment has a queue and threads of its own: a segmentation can take seconds, and on the
   // manager's threads (2 on 2 cores) concurrent calls would starve every other callback.
   ros::CallbackQueue service_queue_;
