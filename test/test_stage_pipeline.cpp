@@ -186,6 +186,7 @@ TEST(StagePipeline, AStageRunsAloneOnAStateBuiltByHand) {
   state.candidates[1].plane.distance = 2.0f;
   ss::SymmetryFilterParams filter;
   filter.min_segment_points = 5;
+  filter.plane_offset_search = 0.0f;  // the fake scores every moved plane 1: the third would pass
 
   state.stage_label = "filter";
   ss::FilterStage(filter).run(state);
@@ -199,7 +200,11 @@ TEST(StagePipeline, AStageRunsAloneOnAStateBuiltByHand) {
   state.stage_label = "dedup";
   ss::DuplicateStage(ss::DuplicateParams{}).run(state);
   EXPECT_EQ(state.segments.size(), 2u) << "what is left no longer overlaps";
-  const ss::Counts expected = {{"filter.candidates", 3}, {"filter.kept", 2}, {"nested.trimmed", 1}, {"dedup.kept", 2}};
+  const ss::Counts expected = {{"filter.candidates", 3},
+                               {"filter.kept", 2},
+                               {"filter.kept_after_offset_fit", 0},
+                               {"nested.trimmed", 1},
+                               {"dedup.kept", 2}};
   EXPECT_EQ(state.counts, expected);
 }
 

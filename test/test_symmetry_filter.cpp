@@ -1,9 +1,12 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
 
 #include "symmetry_segmentation/parallel_for.h"
+#include "fake_evidence.h"
 #include "symmetry_segmentation/symmetry/duplicate_segments.h"
+#include "symmetry_segmentation/symmetry/pipeline_state.h"
 #include "symmetry_segmentation/symmetry/segment_filter.h"
 
 namespace ss = symmetry_segmentation;
@@ -28,6 +31,59 @@ TEST(SegmentFilter, ThresholdsAreStrict) {
   EXPECT_FALSE(ss::passesFilter(candidate(0, 9, 0.95f, 0.01f), params));   // too small
   EXPECT_FALSE(ss::passesFilter(candidate(0, 10, 0.9f, 0.01f), params));   // occlusion not above
   EXPECT_FALSE(ss::passesFilter(candidate(0, 10, 0.95f, 0.05f), params));  // smoothness not below
+}
+
+namespace {
+
+// Evidence whose occlusion score peaks at the plane offset +4 mm (1.0 there, 0.01 less per mm).
+test_support::FakeEvidence offsetSensitiveEvidence() {
+  test_support::FakeEvidence evidence(100);
+  evidence.score = [](const std::vector<int>&, const ss::SymmetryPlane& plane) {
+    return ss::SegmentScores{1.0f - 10.0f * std::fabs(plane.distance - 0.004f), 0.0f};
+  };
+  return evidence;
+}
+
+}  // namespace
+
+TEST(SegmentFilter, PlaneOffsetFitFindsTheOffsetThatExplainsTheReflections) {
+  const test_support::FakeEvidence evidence = offsetSensitiveEvidence();
+  ss::CandidateSegment segment = candidate(0, 50, 0.96f, 0.0f);  // plane at offset 0
+  ss::fitPlaneOffset(segment, evidence, 0.006f);
+  EXPECT_NEAR(segment.plane.distance, 0.004f, 1e-6f);
+  EXPECT_NEAR(segment.scores.occlusion, 1.0f, 1e-5f);
+  EXPECT_EQ(segment.points.size(), 50u);
+
+  ss::CandidateSegment near_only = candidate(0, 50, 0.96f, 0.0f);
+  ss::fitPlaneOffset(near_only, evidence, 0.002f);  // one step each way
+  EXPECT_NEAR(near_only.plane.distance, 0.002f, 1e-6f);
+
+  ss::CandidateSegment best_already = candidate(0, 50, 1.0f, 0.0f);
+  best_already.plane.distance = 0.004f;
+  ss::fitPlaneOffset(best_already, evidence, 0.006f);
+  EXPECT_FLOAT_EQ(best_already.plane.distance, 0.004f);
+}
+
+// The stage refits only candidates that fail on occlusion alone; 0 switches it off.
+TEST(SegmentFilter, TheStageRefitsCandidatesFailingOnlyOnOcclusion) {
+  for (const float reach : {0.006f, 0.0f}) {
+    ss::PipelineState state;
+    state.evidence = std::make_unique<test_support::FakeEvidence>(offsetSensitiveEvidence());
+    state.candidates = {candidate(0, 50, 0.96f, 0.0f),     // plane 4 mm off
+                        candidate(50, 100, 0.96f, 0.5f)};  // a smooth boundary: no offset helps
+    ss::SymmetryFilterParams params;
+    params.plane_offset_search = reach;
+    ss::FilterStage(params).run(state);
+    if (reach > 0.0f) {
+      ASSERT_EQ(state.segments.size(), 1u);
+      EXPECT_EQ(state.segments[0].points.front(), 0);
+      EXPECT_NEAR(state.segments[0].plane.distance, 0.004f, 1e-6f);
+    } else {
+      EXPECT_TRUE(state.segments.empty());
+    }
+    EXPECT_FLOAT_EQ(state.candidates[1].plane.distance, 0.0f);
+    EXPECT_FLOAT_EQ(state.candidates[1].scores.occlusion, 0.96f);
+  }
 }
 
 TEST(SegmentFilter, OverlapOfSmaller) {

@@ -22,7 +22,9 @@ std::vector<CandidateSegment> removeDuplicates(std::vector<CandidateSegment> seg
     const auto& x = segments[a];
     const auto& y = segments[b];
     if (x.scores.smoothness != y.scores.smoothness) return x.scores.smoothness < y.scores.smoothness;
-    return x.points.size() > y.points.size();
+    if (x.points.size() != y.points.size()) return x.points.size() > y.points.size();
+    // The same points under several planes: the plane that explains most reflections.
+    return x.scores.occlusion > y.scores.occlusion;
   });
   std::vector<CandidateSegment> kept;
   for (std::size_t index : order) {

@@ -15,7 +15,8 @@ namespace symmetry_segmentation {
 float overlapOfSmaller(const std::vector<int>& a, const std::vector<int>& b);
 
 /// Among segments overlapping by more than `params.max_overlap` (of the smaller one), keeps the
-/// one with the cleanest boundary (lowest smoothness score, then the larger, then the earlier).
+/// one with the cleanest boundary (lowest smoothness score, then the larger, then the one whose plane
+/// explains more reflections - its occlusion score -, then the earlier).
 std::vector<CandidateSegment> removeDuplicates(std::vector<CandidateSegment> segments, const DuplicateParams& params);
 
 /// The stage: the segments without duplicates.

@@ -207,6 +207,7 @@ struct SymmetryFilterParams {
   float s_smooth = 0.02f;
   float smooth_normal_angle_deg = 15.0f;
   int min_segment_points = 40;
+  float plane_offset_search = 0.006f;
 };
 
 inline void describeParameters(ParameterList<SymmetryFilterParams>& list) {
@@ -216,7 +217,10 @@ inline void describeParameters(ParameterList<SymmetryFilterParams>& list) {
       .add("smooth_normal_angle_deg", &P::smooth_normal_angle_deg, 0.1, 180.0, "deg",
            "links with closer normals count as smooth")
       .add("min_segment_points", &P::min_segment_points, 1, 1000000, "points",
-           "smaller segments, islands and parts are no objects (working-cloud points, 1 cm voxels)");
+           "smaller segments, islands and parts are no objects (working-cloud points, 1 cm voxels)")
+      .add("plane_offset_search", &P::plane_offset_search, 0.0, 0.05, "m",
+           "a candidate failing only s_occl is scored again with its plane moved along its normal by up to "
+           "this (2 mm steps), and the best offset stays; 0: off");
 }
 
 /// Stage island_segments: an island one found plane explains whole.
