@@ -272,6 +272,29 @@ TEST(ColorSeams, ASmallPartColouredApartAtAConcaveCreaseStaysWithItsObject) {
             0u);
 }
 
+TEST(ColorSeams, ASmallBoxBesideALargeOneIsItsOwnObject) {
+  // A small box against a large one's side, one plane across their depth mirroring each onto
+  // itself: far below min_touching_part_fraction, but an object of its own, not a handle.
+  const ss::Cloud cloud = boxSurfaces({Box{{-0.12f, -0.04f, 0.0f}, {0.0f, 0.04f, 0.14f}, kRed},
+                                       Box{{0.0f, -0.03f, 0.0f}, {0.04f, 0.03f, 0.05f}, kBlue}});
+  const ss::ColorSeamParams params;
+  const std::size_t small = pointsOfColor(cloud, kBlue).size();
+  ASSERT_LT(small, params.min_touching_part_fraction * cloud.size());
+  std::vector<ss::CandidateSegment> segments = {everything(cloud, plane(Eigen::Vector3f::UnitY(), 0.0f))};
+  EXPECT_EQ(split(segments, cloud, {}, params), 1u);
+  ASSERT_EQ(segments.size(), 2u);
+  EXPECT_EQ(segments[0].points, pointsOfColor(cloud, kRed));
+  EXPECT_EQ(segments[1].points, pointsOfColor(cloud, kBlue));
+  // The same small part as a flat panel on that side (one face, 1 cm thick) is no object.
+  const ss::Cloud panel = boxSurfaces({Box{{-0.12f, -0.04f, 0.0f}, {0.0f, 0.04f, 0.14f}, kRed},
+                                       Box{{0.0f, -0.03f, 0.02f}, {0.01f, 0.03f, 0.1f}, kBlue}});
+  std::vector<ss::CandidateSegment> with_panel = {everything(panel, plane(Eigen::Vector3f::UnitY(), 0.0f))};
+  ss::ColorSeamParams small_parts = params;
+  small_parts.min_part_fraction = 0.05f;
+  ASSERT_GE(pointsOfColor(panel, kBlue).size(), small_parts.min_part_fraction * panel.size());
+  EXPECT_EQ(split(with_panel, panel, {}, small_parts), 0u);
+}
+
 namespace {
 
 // A red box against a blue one, the red box's segment with the blue box's top face too (the

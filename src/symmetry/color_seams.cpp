@@ -12,12 +12,17 @@
 
 #include "color_lab.h"
 #include "disjoint_sets.h"
+#include "symmetry_segmentation/plane_fit.h"
 #include "symmetry_segmentation/symmetry/pipeline_state.h"
 #include "symmetry_segmentation/symmetry/smoothness_weight.h"
 #include "symmetry_segmentation/symmetry/sorted_indices.h"
 
 namespace symmetry_segmentation {
 namespace {
+
+// Points within this many voxels of a plane are on it (a face's noise at the working resolution,
+// as object_size counts it).
+constexpr float kOnPlaneVoxels = 1.5f;
 
 // Part per segment position: the large uniform-colour regions, each grown over the segment's
 // links into the small regions around it (print, blended colours at the seam). Empty unless
@@ -111,6 +116,31 @@ bool seamSpansBoth(const std::vector<int>& ends, const std::vector<int>& points,
   return false;
 }
 
+// Whether a colour part is an object of its own, however small beside the rest: most of its
+// matched reflections about the segment's plane land on itself (boxes in a row share that plane
+// and each mirrors onto itself; a print patch or a handle's colour mirrors onto the rest of its
+// object or nowhere), and it is more than one flat face (any plane across a face mirrors it onto
+// itself, and a box's face in another print is no object).
+bool standsAlone(const std::vector<int>& piece, const SymmetryPlane& plane, const SceneEvidence& evidence,
+                 const ColorSeamParams& params) {
+  int matched = 0;
+  int onto_itself = 0;
+  for (int p : piece) {
+    const int q = evidence.match(p, plane);
+    if (q < 0) continue;
+    ++matched;
+    onto_itself += contains(piece, q) ? 1 : 0;
+  }
+  if (matched < params.min_seam_links || onto_itself < params.min_self_mirrored_fraction * matched) return false;
+  auto part_cloud = std::make_shared<Cloud>();
+  part_cloud->reserve(piece.size());
+  for (int p : piece) part_cloud->push_back(evidence.cloud()[p]);
+  pcl::PointIndices on_plane;
+  constexpr int kPlaneIterations = 200;
+  fitLargestPlane(part_cloud, params.on_plane_distance, kPlaneIterations, on_plane);
+  return on_plane.indices.size() <= params.max_piece_plane_share * piece.size();
+}
+
 // Groups the parts into objects and renumbers `part` to 0..count-1; returns the count. Two
 // parts are different objects where their seam has a good share of concave links (where objects
 // touch: a bowl on a box, a short box's top against its taller neighbour's side) and the
@@ -119,8 +149,8 @@ bool seamSpansBoth(const std::vector<int>& ends, const std::vector<int>& points,
 // one object's differently coloured parts; a part with no seam to any other (the pieces of one
 // box seen either side of a board) joins the part closest to it in colour.
 int objectsAtColorSeams(const std::vector<int>& points, const std::vector<Eigen::Vector3f>& lab, const Cloud& cloud,
-                       const std::vector<std::vector<int>>& neighbours, const ColorSeamParams& params,
-                       std::vector<int>& part, int count) {
+                       const std::vector<std::vector<int>>& neighbours, const SymmetryPlane& plane,
+                       const SceneEvidence& evidence, const ColorSeamParams& params, std::vector<int>& part, int count) {
   const float min_flat_cos = std::cos(params.flat_link_angle_deg * static_cast<float>(M_PI) / 180.0f);
   struct Seam {
     int links = 0;
@@ -144,8 +174,14 @@ int objectsAtColorSeams(const std::vector<int>& points, const std::vector<Eigen:
     seam.ends.push_back(j);
     seam.ends.push_back(k);
   });
-  std::vector<int> part_size(count, 0);
-  for (int p : part) ++part_size[p];
+  std::vector<std::vector<int>> pieces(count);  // sorted, as `points` is
+  for (std::size_t j = 0; j < points.size(); ++j) pieces[part[j]].push_back(points[j]);
+  std::vector<int> alone(count, -1);  // standsAlone per part, computed when first asked
+  const auto large_or_alone = [&](int a) {
+    if (pieces[a].size() >= params.min_touching_part_fraction * points.size()) return true;
+    if (alone[a] < 0) alone[a] = standsAlone(pieces[a], plane, evidence, params) ? 1 : 0;
+    return alone[a] == 1;
+  };
   DisjointSets objects(count);
   std::vector<std::pair<int, int>> between_objects;
   for (const auto& [pair, seam] : seams) {
@@ -153,8 +189,7 @@ int objectsAtColorSeams(const std::vector<int>& points, const std::vector<Eigen:
     const int concave_links = seam.links - seam.flat_links - seam.convex_links;
     const bool touching = concave_links >= params.min_seam_links &&
                           concave_links >= params.min_concave_seam_fraction * seam.links &&
-                          std::min(part_size[pair.first], part_size[pair.second]) >=
-                              params.min_touching_part_fraction * points.size();
+                          large_or_alone(pair.first) && large_or_alone(pair.second);
     const bool flat = params.split_flush_seams && seam.flat_links >= params.min_seam_links &&
                       seam.flat_links >= params.min_flat_seam_fraction * (seam.flat_links + seam.convex_links);
     if (touching || (flat && seamSpansBoth(seam.ends, points, part, pair.first, pair.second, cloud, params.min_seam_span))) {
@@ -240,7 +275,7 @@ std::size_t splitAtColorSeams(std::vector<CandidateSegment>& segments, const std
     for (std::size_t j = 0; j < points.size(); ++j) lab[j] = toLab(cloud[points[j]]);
     std::vector<int> part = largeColorRegions(points, lab, neighbours, params, count);
     if (part.empty()) continue;
-    count = objectsAtColorSeams(points, lab, cloud, neighbours, params, part, count);
+    count = objectsAtColorSeams(points, lab, cloud, neighbours, segments[i].plane, evidence, params, part, count);
     if (count < 2) continue;
     std::vector<std::vector<int>> pieces(count);
     for (std::size_t j = 0; j < points.size(); ++j) pieces[part[j]].push_back(points[j]);
@@ -274,6 +309,7 @@ void ColorSeamStage::run(PipelineState& state) const {
     ColorSeamParams params = params_;
     params.min_part_points = filter_.min_segment_points;
     params.flat_link_angle_deg = filter_.smooth_normal_angle_deg;
+    params.on_plane_distance = kOnPlaneVoxels * voxel_size_;
     split = splitAtColorSeams(state.segments, state.candidates, *state.evidence, params);
   }
   state.count("split", split);

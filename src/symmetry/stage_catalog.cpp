@@ -80,7 +80,7 @@ const std::vector<StageInfo>& stageCatalog() {
        [](const Config& c) { return made<NestedStage>(c.symmetry.nested, c.symmetry.filter); }},
       {"color_seams", K::SegmentRewriter, "flush objects of different colours are split at their colour seam",
        {P::Candidates, P::Segments}, {},
-       [](const Config& c) { return made<ColorSeamStage>(c.symmetry.color_seams, c.symmetry.filter); }},
+       [](const Config& c) { return made<ColorSeamStage>(c.symmetry.color_seams, c.symmetry.filter, c.preprocessing.voxel_size); }},
       {"object_size", K::SegmentRewriter, "a segment larger than a graspable object, or mostly one wide plane, is dropped",
        {P::Segments}, {},
        [](const Config& c) { return made<ObjectSizeStage>(c.symmetry.object_size, c.preprocessing.voxel_size); }},

@@ -2,7 +2,9 @@
 // Stage 15, color_seams (our addition): objects of different colours that touch at a concave
 // crease (a bowl on a box, a short box against a taller one) can be one segment to the cut;
 // their colours part them. A segment of a few large uniform-colour regions meeting along such a
-// crease is split into them; colour edges on convex edges (a lid) or in print keep it whole.
+// crease is split into them; colour edges on convex edges (a lid) or in print keep it whole. A
+// part much smaller than the rest (a small box beside a large one, or a handle) counts only when
+// it stands alone: mirrored onto itself by the segment's plane, and more than one flat face.
 // Flat seams (flush boxes of one depth, a box on a box of its footprint) split only with
 // split_flush_seams: on real frames they are far more often one object printed in two colours
 // (OSD learn: 12 of 45 frames lost an object to them, none gained one). Needs colour.
@@ -23,15 +25,18 @@ std::size_t splitAtColorSeams(std::vector<CandidateSegment>& segments, const std
                               const SceneEvidence& evidence, const ColorSeamParams& params);
 
 /// The stage: splitAtColorSeams on the segments, planes from every candidate; part sizes and
-/// flat links as the filter's min_segment_points and smooth_normal_angle_deg.
+/// flat links as the filter's min_segment_points and smooth_normal_angle_deg, the distance of a
+/// point on a plane from the working voxel size.
 class ColorSeamStage : public Stage {
  public:
-  ColorSeamStage(const ColorSeamParams& params, const SymmetryFilterParams& filter) : params_(params), filter_(filter) {}
+  ColorSeamStage(const ColorSeamParams& params, const SymmetryFilterParams& filter, float voxel_size)
+      : params_(params), filter_(filter), voxel_size_(voxel_size) {}
   void run(PipelineState& state) const override;
 
  private:
   ColorSeamParams params_;
   SymmetryFilterParams filter_;
+  float voxel_size_;
 };
 
 }  // namespace symmetry_segmentation

@@ -310,12 +310,16 @@ struct ColorSeamParams {
   int min_seam_links = 5;
   float min_concave_seam_fraction = 0.3f;
   float min_touching_part_fraction = 0.25f;
+  float min_self_mirrored_fraction = 0.7f;
+  float max_piece_plane_share = 0.8f;
   float min_seam_span = 0.7f;
   float min_plane_share = 0.3f;
   bool split_flush_seams = false;
   // From symmetry.filter (min_segment_points, smooth_normal_angle_deg): not parameters of their own.
   int min_part_points = 40;
   float flat_link_angle_deg = 15.0f;
+  // From preprocessing.voxel_size: points within 1.5 voxels of a plane are on it.
+  float on_plane_distance = 0.015f;
 };
 
 inline void describeParameters(ParameterList<ColorSeamParams>& list) {
@@ -330,7 +334,11 @@ inline void describeParameters(ParameterList<ColorSeamParams>& list) {
       .add("min_concave_seam_fraction", &P::min_concave_seam_fraction, 0.0, 1.0, "",
            "regions meeting with this share of concave links (a bowl on a box)...")
       .add("min_touching_part_fraction", &P::min_touching_part_fraction, 0.0, 1.0, "",
-           "...are two objects when the smaller has this share (a handle has less)")
+           "...are two objects when the smaller has this share (a handle has less)...")
+      .add("min_self_mirrored_fraction", &P::min_self_mirrored_fraction, 0.0, 1.0, "",
+           "...or when the smaller is an object of its own: this share of its matched reflections (the segment's plane) land on it, not on the other part (a print patch mirrors onto the rest of its object)...")
+      .add("max_piece_plane_share", &P::max_piece_plane_share, 0.0, 1.0, "",
+           "...and at most this share of it lies on one plane (one face of a box is no object)")
       .add("min_seam_span", &P::min_seam_span, 0.0, 1.0, "",
            "a flush seam spans this share of each part along one of its axes (a bottle cap's ring does not)")
       .add("min_plane_share", &P::min_plane_share, 0.0, 1.0, "", "a found segment's plane is tried on a part it covers this share of")
