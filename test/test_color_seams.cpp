@@ -129,14 +129,26 @@ ss::ColorSeamParams withFlushSeams() {
 
 }  // namespace
 
-TEST(ColorSeams, AFlatSeamAloneDoesNotSplitByDefault) {
+TEST(ColorSeams, AFlatSeamSplitsOnlyBetweenPartsThatStandAlone) {
   // To the geometry a box on a box of its footprint is one taller box, as is a box printed in
-  // two colours; on real objects the second is far more common (OSD), so by default only a
-  // concave crease parts differently coloured regions.
-  const ss::Cloud cloud = boxSurfaces(boxOnBox(kBlue));
-  std::vector<ss::CandidateSegment> segments = {everything(cloud, kAcross)};
-  EXPECT_EQ(split(segments, cloud), 0u);
+  // two colours. Each box of the stack is mirrored onto itself by the plane they share; each
+  // half of a box printed in two colours either side of its plane is mirrored onto the other.
+  const ss::Cloud stack = boxSurfaces(boxOnBox(kBlue));
+  std::vector<ss::CandidateSegment> segments = {everything(stack, kAcross)};
+  EXPECT_EQ(split(segments, stack), 1u);
+  ss::Cloud printed = boxSurfaces({Box{{-0.05f, -0.04f, 0.0f}, {0.05f, 0.04f, 0.12f}, kRed}});
+  for (auto& point : printed) {
+    if (point.x < 0.0f) point.r = kBlue[0], point.g = kBlue[1], point.b = kBlue[2];
+  }
+  ASSERT_GT(pointsOfColor(printed, kBlue).size(), 0.3 * printed.size());
+  segments = {everything(printed, kAcross)};
+  EXPECT_EQ(split(segments, printed), 0u);
   EXPECT_EQ(segments.size(), 1u);
+  // Without split_flush_seams only concave creases part colours.
+  ss::ColorSeamParams creases_only;
+  creases_only.split_flush_seams = false;
+  segments = {everything(stack, kAcross)};
+  EXPECT_EQ(split(segments, stack, {}, creases_only), 0u);
 }
 
 TEST(ColorSeams, ABoxOnABoxOfTheSameFootprintIsTwoObjectsWithFlushSeams) {

@@ -163,16 +163,19 @@ TEST(SymmetryMethod, ABoardStandingInFrontOfABoxAndTheBoxAreTwoObjects) {
   EXPECT_LT(std::min(bestIoU(scene, whole, 1), bestIoU(scene, whole, 2)), 0.9);
 }
 
-TEST(SymmetryMethod, ABoxOnABoxOfTheSameFootprintIsTwoObjectsByTheirColoursWithFlushSeams) {
+TEST(SymmetryMethod, ABoxOnABoxOfTheSameFootprintIsTwoObjectsByTheirColours) {
   // The stacked scene, seed 1: a box (1) under a box of the same footprint (2), their sides flush.
-  // To the shape one taller box; their colours differ (color_seams.h). Only with flush seams
-  // split, which the default leaves off: real objects are far more often printed in two colours.
+  // To the shape one taller box; their colours differ, and each box stands alone (color_seams.h).
   ss::Scene scene = generated(ss::synthetic::SceneKind::Stacked, 1);
   ss::SegmentationConfig config = highRecall();
-  config.symmetry.color_seams.split_flush_seams = true;
   const auto split = ss::makeSegmenter("symmetry", config)->segment(scene);
   EXPECT_GT(bestIoU(scene, split, 1), 0.9);
   EXPECT_GT(bestIoU(scene, split, 2), 0.9);
+
+  config.symmetry.color_seams.split_flush_seams = false;  // concave colour seams only
+  const auto creases_only = ss::makeSegmenter("symmetry", config)->segment(scene);
+  EXPECT_LT(std::min(bestIoU(scene, creases_only, 1), bestIoU(scene, creases_only, 2)), 0.9);
+  config.symmetry.color_seams.split_flush_seams = true;
 
   scene.has_color = false;  // a cloud without colour: nothing tells them apart
   const auto colorless = ss::makeSegmenter("symmetry", config)->segment(scene);

@@ -116,13 +116,9 @@ bool seamSpansBoth(const std::vector<int>& ends, const std::vector<int>& points,
   return false;
 }
 
-// Whether a colour part is an object of its own, however small beside the rest: most of its
-// matched reflections about the segment's plane land on itself (boxes in a row share that plane
-// and each mirrors onto itself; a print patch or a handle's colour mirrors onto the rest of its
-// object or nowhere), and it is more than one flat face (any plane across a face mirrors it onto
-// itself, and a box's face in another print is no object).
-bool standsAlone(const std::vector<int>& piece, const SymmetryPlane& plane, const SceneEvidence& evidence,
-                 const ColorSeamParams& params) {
+// Whether most of `piece`'s matched reflections about `plane` land on `piece` itself.
+bool mirroredOntoItself(const std::vector<int>& piece, const SymmetryPlane& plane, const SceneEvidence& evidence,
+                        const ColorSeamParams& params) {
   int matched = 0;
   int onto_itself = 0;
   for (int p : piece) {
@@ -131,7 +127,26 @@ bool standsAlone(const std::vector<int>& piece, const SymmetryPlane& plane, cons
     ++matched;
     onto_itself += contains(piece, q) ? 1 : 0;
   }
-  if (matched < params.min_seam_links || onto_itself < params.min_self_mirrored_fraction * matched) return false;
+  return matched >= params.min_seam_links && onto_itself >= params.min_self_mirrored_fraction * matched;
+}
+
+// Whether a colour part is an object of its own: a plane mirrors most of its matched reflections
+// onto itself (boxes in a row or in a stack share such a plane and each mirrors onto itself; a
+// print patch or a handle's colour mirrors onto the rest of its object or nowhere), and it is
+// more than one flat face (any plane across a face mirrors it onto itself, and a box's face in
+// another print is no object).
+bool standsAlone(const std::vector<int>& piece, const SymmetryPlane& plane, const std::vector<CandidateSegment>& found,
+                 const SceneEvidence& evidence, const ColorSeamParams& params) {
+  // The segment's plane, or that of a found segment covering a good share of the piece (a stack
+  // of two boxes may come with the horizontal plane that mirrors one box onto the other).
+  bool mirrored = mirroredOntoItself(piece, plane, evidence, params);
+  for (std::size_t i = 0; i < found.size() && !mirrored; ++i) {
+    if (found[i].points.empty() || intersectionSize(found[i].points, piece) < params.min_plane_share * piece.size()) {
+      continue;
+    }
+    mirrored = mirroredOntoItself(piece, found[i].plane, evidence, params);
+  }
+  if (!mirrored) return false;
   auto part_cloud = std::make_shared<Cloud>();
   part_cloud->reserve(piece.size());
   for (int p : piece) part_cloud->push_back(evidence.cloud()[p]);
@@ -150,7 +165,8 @@ bool standsAlone(const std::vector<int>& piece, const SymmetryPlane& plane, cons
 // box seen either side of a board) joins the part closest to it in colour.
 int objectsAtColorSeams(const std::vector<int>& points, const std::vector<Eigen::Vector3f>& lab, const Cloud& cloud,
                        const std::vector<std::vector<int>>& neighbours, const SymmetryPlane& plane,
-                       const SceneEvidence& evidence, const ColorSeamParams& params, std::vector<int>& part, int count) {
+                       const std::vector<CandidateSegment>& found, const SceneEvidence& evidence,
+                       const ColorSeamParams& params, std::vector<int>& part, int count) {
   const float min_flat_cos = std::cos(params.flat_link_angle_deg * static_cast<float>(M_PI) / 180.0f);
   struct Seam {
     int links = 0;
@@ -177,10 +193,12 @@ int objectsAtColorSeams(const std::vector<int>& points, const std::vector<Eigen:
   std::vector<std::vector<int>> pieces(count);  // sorted, as `points` is
   for (std::size_t j = 0; j < points.size(); ++j) pieces[part[j]].push_back(points[j]);
   std::vector<int> alone(count, -1);  // standsAlone per part, computed when first asked
-  const auto large_or_alone = [&](int a) {
-    if (pieces[a].size() >= params.min_touching_part_fraction * points.size()) return true;
-    if (alone[a] < 0) alone[a] = standsAlone(pieces[a], plane, evidence, params) ? 1 : 0;
+  const auto stands_alone = [&](int a) {
+    if (alone[a] < 0) alone[a] = standsAlone(pieces[a], plane, found, evidence, params) ? 1 : 0;
     return alone[a] == 1;
+  };
+  const auto large_or_alone = [&](int a) {
+    return pieces[a].size() >= params.min_touching_part_fraction * points.size() || stands_alone(a);
   };
   DisjointSets objects(count);
   std::vector<std::pair<int, int>> between_objects;
@@ -190,7 +208,8 @@ int objectsAtColorSeams(const std::vector<int>& points, const std::vector<Eigen:
     const bool touching = concave_links >= params.min_seam_links &&
                           concave_links >= params.min_concave_seam_fraction * seam.links &&
                           large_or_alone(pair.first) && large_or_alone(pair.second);
-    const bool flat = params.split_flush_seams && seam.flat_links >= params.min_seam_links &&
+    const bool flat = params.split_flush_seams && stands_alone(pair.first) && stands_alone(pair.second) &&
+                      seam.flat_links >= params.min_seam_links &&
                       seam.flat_links >= params.min_flat_seam_fraction * (seam.flat_links + seam.convex_links);
     if (touching || (flat && seamSpansBoth(seam.ends, points, part, pair.first, pair.second, cloud, params.min_seam_span))) {
       between_objects.push_back(pair);
@@ -275,7 +294,7 @@ std::size_t splitAtColorSeams(std::vector<CandidateSegment>& segments, const std
     for (std::size_t j = 0; j < points.size(); ++j) lab[j] = toLab(cloud[points[j]]);
     std::vector<int> part = largeColorRegions(points, lab, neighbours, params, count);
     if (part.empty()) continue;
-    count = objectsAtColorSeams(points, lab, cloud, neighbours, segments[i].plane, evidence, params, part, count);
+    count = objectsAtColorSeams(points, lab, cloud, neighbours, segments[i].plane, found, evidence, params, part, count);
     if (count < 2) continue;
     std::vector<std::vector<int>> pieces(count);
     for (std::size_t j = 0; j < points.size(); ++j) pieces[part[j]].push_back(points[j]);

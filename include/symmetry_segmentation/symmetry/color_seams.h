@@ -5,9 +5,10 @@
 // crease is split into them; colour edges on convex edges (a lid) or in print keep it whole. A
 // part much smaller than the rest (a small box beside a large one, or a handle) counts only when
 // it stands alone: mirrored onto itself by the segment's plane, and more than one flat face.
-// Flat seams (flush boxes of one depth, a box on a box of its footprint) split only with
-// split_flush_seams: on real frames they are far more often one object printed in two colours
-// (OSD learn: 12 of 45 frames lost an object to them, none gained one). Needs colour.
+// Flat seams (flush boxes of one depth, a box on a box of its footprint) split only between
+// parts that each stand alone: on real frames a flat colour seam is far more often one object
+// printed in two colours (OSD learn: split at every flat seam, 12 of 45 frames lost an object
+// and none gained one; split between parts that stand alone, none changes). Needs colour.
 #include <vector>
 
 #include "symmetry_segmentation/symmetry/scene_evidence.h"

@@ -314,7 +314,7 @@ struct ColorSeamParams {
   float max_piece_plane_share = 0.8f;
   float min_seam_span = 0.7f;
   float min_plane_share = 0.3f;
-  bool split_flush_seams = false;
+  bool split_flush_seams = true;
   // From symmetry.filter (min_segment_points, smooth_normal_angle_deg): not parameters of their own.
   int min_part_points = 40;
   float flat_link_angle_deg = 15.0f;
@@ -343,7 +343,7 @@ inline void describeParameters(ParameterList<ColorSeamParams>& list) {
            "a flush seam spans this share of each part along one of its axes (a bottle cap's ring does not)")
       .add("min_plane_share", &P::min_plane_share, 0.0, 1.0, "", "a found segment's plane is tried on a part it covers this share of")
       .add("split_flush_seams", &P::split_flush_seams,
-           "also split at flat seams (flush boxes of one depth): on real printed objects this splits one object in 12 of 45 OSD frames");
+           "also split at flat seams (a box on a box of its footprint, flush boxes of one depth) between parts that each stand alone; false: at concave creases only");
 }
 
 /// Stage object_size: only what a robot could grasp is an object.
