@@ -12,17 +12,13 @@
 
 #include "color_lab.h"
 #include "disjoint_sets.h"
-#include "symmetry_segmentation/plane_fit.h"
+#include "symmetry_segmentation/symmetry/object_size.h"
 #include "symmetry_segmentation/symmetry/pipeline_state.h"
 #include "symmetry_segmentation/symmetry/smoothness_weight.h"
 #include "symmetry_segmentation/symmetry/sorted_indices.h"
 
 namespace symmetry_segmentation {
 namespace {
-
-// Points within this many voxels of a plane are on it (a face's noise at the working resolution,
-// as object_size counts it).
-constexpr float kOnPlaneVoxels = 1.5f;
 
 // Part per segment position: the large uniform-colour regions, each grown over the segment's
 // links into the small regions around it (print, blended colours at the seam). Empty unless
@@ -147,13 +143,8 @@ bool standsAlone(const std::vector<int>& piece, const SymmetryPlane& plane, cons
     mirrored = mirroredOntoItself(piece, found[i].plane, evidence, params);
   }
   if (!mirrored) return false;
-  auto part_cloud = std::make_shared<Cloud>();
-  part_cloud->reserve(piece.size());
-  for (int p : piece) part_cloud->push_back(evidence.cloud()[p]);
-  pcl::PointIndices on_plane;
-  constexpr int kPlaneIterations = 200;
-  fitLargestPlane(part_cloud, params.on_plane_distance, kPlaneIterations, on_plane);
-  return on_plane.indices.size() <= params.max_piece_plane_share * piece.size();
+  const Cloud::ConstPtr cloud(&evidence.cloud(), [](const Cloud*) {});  // not owned: PCL wants a shared pointer
+  return largestPlanePoints(cloud, piece, params.on_plane_distance).size() <= params.max_piece_plane_share * piece.size();
 }
 
 // Groups the parts into objects and renumbers `part` to 0..count-1; returns the count. Two
@@ -208,10 +199,10 @@ int objectsAtColorSeams(const std::vector<int>& points, const std::vector<Eigen:
     const bool touching = concave_links >= params.min_seam_links &&
                           concave_links >= params.min_concave_seam_fraction * seam.links &&
                           large_or_alone(pair.first) && large_or_alone(pair.second);
-    const bool flat = params.split_flush_seams && stands_alone(pair.first) && stands_alone(pair.second) &&
-                      seam.flat_links >= params.min_seam_links &&
+    const bool flat = params.split_flush_seams && seam.flat_links >= params.min_seam_links &&
                       seam.flat_links >= params.min_flat_seam_fraction * (seam.flat_links + seam.convex_links);
-    if (touching || (flat && seamSpansBoth(seam.ends, points, part, pair.first, pair.second, cloud, params.min_seam_span))) {
+    if (touching || (flat && seamSpansBoth(seam.ends, points, part, pair.first, pair.second, cloud, params.min_seam_span) &&
+                     stands_alone(pair.first) && stands_alone(pair.second))) {
       between_objects.push_back(pair);
     } else {
       objects.unite(pair.first, pair.second);
@@ -328,7 +319,7 @@ void ColorSeamStage::run(PipelineState& state) const {
     ColorSeamParams params = params_;
     params.min_part_points = filter_.min_segment_points;
     params.flat_link_angle_deg = filter_.smooth_normal_angle_deg;
-    params.on_plane_distance = kOnPlaneVoxels * voxel_size_;
+    params.on_plane_distance = onPlaneDistance(voxel_size_);
     split = splitAtColorSeams(state.segments, state.candidates, *state.evidence, params);
   }
   state.count("split", split);

@@ -31,8 +31,6 @@ float trimmedSpan(std::vector<float>& values) {
   const float high = at(1.0f - kTrim);
   return high - low;
 }
-// Points within this many voxels of a plane are on it (a face's noise at the working resolution).
-constexpr float kOnPlaneVoxels = 1.5f;
 
 /// Extents of `points` along their principal axes, between the kTrim and 1 - kTrim quantiles:
 /// a few stray points of a neighbour or of the background do not make an object large.
@@ -90,19 +88,24 @@ bool hasObjectSize(const Cloud::ConstPtr& cloud, const std::vector<int>& points,
   if (params.max_extent > 0.0f && segmentExtents(*cloud, points, up)[0] > params.max_extent) return false;
   if (params.max_plane_extent <= 0.0f) return true;
   // Mostly one plane: the largest plane's share of the points, and how wide that plane is.
+  const std::vector<int> on_plane = largestPlanePoints(cloud, points, plane_distance);
+  if (static_cast<float>(on_plane.size()) < params.min_plane_share * static_cast<float>(points.size())) return true;
+  return segmentExtents(*cloud, on_plane, std::nullopt)[0] <= params.max_plane_extent;
+}
+
+std::vector<int> largestPlanePoints(const Cloud::ConstPtr& cloud, const std::vector<int>& points, float distance) {
+  if (points.size() < 3) return {};
   pcl::SACSegmentation<PointT> ransac;
   ransac.setModelType(pcl::SACMODEL_PLANE);
   ransac.setMethodType(pcl::SAC_RANSAC);
-  ransac.setDistanceThreshold(plane_distance);
+  ransac.setDistanceThreshold(distance);
   ransac.setMaxIterations(kPlaneIterations);
   ransac.setInputCloud(cloud);
   ransac.setIndices(std::make_shared<pcl::Indices>(points.begin(), points.end()));
   pcl::PointIndices inliers;
   pcl::ModelCoefficients coefficients;
   ransac.segment(inliers, coefficients);
-  if (static_cast<float>(inliers.indices.size()) < params.min_plane_share * static_cast<float>(points.size())) return true;
-  const std::vector<int> on_plane(inliers.indices.begin(), inliers.indices.end());
-  return segmentExtents(*cloud, on_plane, std::nullopt)[0] <= params.max_plane_extent;
+  return std::vector<int>(inliers.indices.begin(), inliers.indices.end());
 }
 
 float topHeight(const Cloud& cloud, const std::vector<int>& points, const PlaneCoefficients& table_plane) {
@@ -117,7 +120,7 @@ float topHeight(const Cloud& cloud, const std::vector<int>& points, const PlaneC
 }
 
 void ObjectSizeStage::run(PipelineState& state) const {
-  const float plane_distance = kOnPlaneVoxels * voxel_size_;
+  const float plane_distance = onPlaneDistance(voxel_size_);
   const std::size_t before = state.segments.size();
   const bool check_top = params_.min_top_height > 0.0f && state.prepared.has_table;
   state.segments.erase(std::remove_if(state.segments.begin(), state.segments.end(),

@@ -26,6 +26,12 @@ float topHeight(const Cloud& cloud, const std::vector<int>& points, const PlaneC
 /// principal axes.
 Eigen::Vector3f segmentExtents(const Cloud& cloud, const std::vector<int>& points, const std::optional<Eigen::Vector3f>& up);
 
+/// The points of `points` within `distance` of their largest plane (RANSAC, PCL), unsorted.
+std::vector<int> largestPlanePoints(const Cloud::ConstPtr& cloud, const std::vector<int>& points, float distance);
+
+/// Points this close to a plane are on it: a face's noise at the working resolution (1.5 voxels).
+inline float onPlaneDistance(float voxel_size) { return 1.5f * voxel_size; }
+
 /// Whether `points` of `cloud` are a graspable object under `params` (see the header).
 bool hasObjectSize(const Cloud::ConstPtr& cloud, const std::vector<int>& points, const std::optional<Eigen::Vector3f>& up,
                    const ObjectSizeParams& params, float plane_distance);

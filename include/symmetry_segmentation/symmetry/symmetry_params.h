@@ -318,7 +318,7 @@ struct ColorSeamParams {
   // From symmetry.filter (min_segment_points, smooth_normal_angle_deg): not parameters of their own.
   int min_part_points = 40;
   float flat_link_angle_deg = 15.0f;
-  // From preprocessing.voxel_size: points within 1.5 voxels of a plane are on it.
+  // From preprocessing.voxel_size (object_size's onPlaneDistance): points this close to a plane are on it.
   float on_plane_distance = 0.015f;
 };
 
