@@ -28,8 +28,13 @@ bool isFinitePoint(const PointT& point) {
   return point.getVector3fMap().allFinite() && point.getNormalVector3fMap().allFinite();
 }
 
-/// k nearest other points of every point, made symmetric (j in N(i) <=> i in N(j)), sorted.
-std::vector<std::vector<int>> symmetricKnn(const Cloud& cloud, const pcl::KdTreeFLANN<PointT>& tree, int k) {
+/// k nearest other points of every point within `max_distance` (0: any distance), made
+/// symmetric (j in N(i) <=> i in N(j)), sorted. Without the bound, an isolated voxel of sensor
+/// noise above the table is the neighbour of whatever surface is nearest, however far, and the
+/// cut's smoothness term pulls it into that object.
+std::vector<std::vector<int>> symmetricKnn(const Cloud& cloud, const pcl::KdTreeFLANN<PointT>& tree, int k,
+                                           float max_distance) {
+  const float max_squared = max_distance * max_distance;
   const int n = static_cast<int>(cloud.size());
   std::vector<std::vector<int>> neighbours(n);
   if (k <= 0) return neighbours;
@@ -42,6 +47,7 @@ std::vector<std::vector<int>> symmetricKnn(const Cloud& cloud, const pcl::KdTree
     for (int f = 0; f < found && taken < k; ++f) {
       const int j = indices[f];
       if (j == i || !isFinitePoint(cloud.points[j])) continue;
+      if (max_distance > 0.0f && squared[f] > max_squared) break;  // sorted by distance
       neighbours[i].push_back(j);
       neighbours[j].push_back(i);
       ++taken;
@@ -75,7 +81,7 @@ SymmetricGraphCut::SymmetricGraphCut(Cloud::ConstPtr cloud, const OccupancyMap& 
   if (cloud_->empty()) return;
   tree_.setInputCloud(cloud_);
   grid_ = PointGrid(*cloud_, params_.dbuf);
-  neighbours_ = symmetricKnn(*cloud_, tree_, params_.neighbours);
+  neighbours_ = symmetricKnn(*cloud_, tree_, params_.neighbours, params_.max_neighbour_distance);
   for (int a = 0; a < static_cast<int>(neighbours_.size()); ++a) {
     const PointT& p = cloud_->points[a];
     for (int b : neighbours_[a]) {

@@ -138,6 +138,7 @@ struct SymmetryCutParams {
   float lambda_smooth = 2.0f;
   float lambda_sym = 2.0f;
   int neighbours = 5;
+  float max_neighbour_distance = 0.05f;
 };
 
 inline void describeParameters(ParameterList<SymmetryCutParams>& list) {
@@ -151,6 +152,8 @@ inline void describeParameters(ParameterList<SymmetryCutParams>& list) {
       .add("lambda_smooth", &P::lambda_smooth, 0.0, 20.0, "", "weight of the smoothness term (paper)").live()
       .add("lambda_sym", &P::lambda_sym, 0.0, 20.0, "", "weight of the symmetric-neighbour term (paper)").live()
       .add("neighbours", &P::neighbours, 1, 50, "", "k of the k-nearest-neighbour smoothness graph (paper)")
+      .add("max_neighbour_distance", &P::max_neighbour_distance, 0.0, 1.0, "m",
+           "...but points farther apart are not neighbours: a speck of noise is no part of the surface nearest to it; 0: no limit")
       .rule([](const P& p) { return p.dmax < p.dbuf ? "" : "needs dmax < dbuf"; })
       .rule([](const P& p) { return p.alpha_min_deg < p.alpha_max_deg ? "" : "needs alpha_min_deg < alpha_max_deg"; });
 }
