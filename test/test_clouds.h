@@ -1,7 +1,11 @@
 #pragma once
 // Small hand-built clouds with known geometry for unit tests.
 
+#include <algorithm>
+#include <vector>
+
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include "symmetry_segmentation/scene.h"
 
@@ -63,5 +67,54 @@ inline void addWall(symmetry_segmentation::Cloud& cloud, float y, float half_wid
     }
   }
 }
+
+/// One view of a box 30 cm long behind a post 6 cm wide, from a sensor in front: only what faces
+/// the sensor and no other box hides (labels: 1 the long box, 2 the post, 0 the table).
+inline symmetry_segmentation::Scene boxBehindAPost() {
+  const Eigen::Vector3f sensor(0.0f, -0.8f, 0.15f);
+  const std::vector<Eigen::AlignedBox3f> boxes = {
+      {Eigen::Vector3f(-0.15f, 0.10f, 0.0f), Eigen::Vector3f(0.15f, 0.18f, 0.08f)},
+      {Eigen::Vector3f(-0.03f, -0.06f, 0.0f), Eigen::Vector3f(0.03f, -0.02f, 0.16f)}};
+  const auto hidden = [&](const Eigen::Vector3f& point, int own) {
+    const Eigen::Vector3f step = point - sensor;
+    for (int b = 0; b < static_cast<int>(boxes.size()); ++b) {
+      if (b == own) continue;
+      float enter = 0.0f, leave = 1.0f;
+      for (int d = 0; d < 3; ++d) {
+        float t0 = (boxes[b].min()[d] - sensor[d]) / step[d], t1 = (boxes[b].max()[d] - sensor[d]) / step[d];
+        if (t0 > t1) std::swap(t0, t1);
+        enter = std::max(enter, t0);
+        leave = std::min(leave, t1);
+      }
+      if (enter < leave) return true;
+    }
+    return false;
+  };
+  symmetry_segmentation::Scene scene;
+  scene.name = "box_behind_a_post";
+  scene.cloud.reset(new symmetry_segmentation::Cloud);
+  scene.has_normals = true;
+  scene.has_color = true;
+  scene.sensor_origins = {sensor};
+  scene.table_plane = symmetry_segmentation::PlaneCoefficients(0.0f, 0.0f, 1.0f, 0.0f);
+  const auto keepVisible = [&](const symmetry_segmentation::Cloud& part, int own, int label) {
+    for (const auto& point : part) {
+      const Eigen::Vector3f p = point.getVector3fMap();
+      if (point.getNormalVector3fMap().dot(sensor - p) <= 0.0f || hidden(p, own)) continue;
+      scene.cloud->push_back(point);
+      scene.labels.push_back(label);
+    }
+  };
+  for (int b = 0; b < 2; ++b) {
+    symmetry_segmentation::Cloud part;
+    test_clouds::addBox(part, boxes[b].min(), boxes[b].sizes(), 0.005f);
+    keepVisible(part, b, b + 1);
+  }
+  symmetry_segmentation::Cloud table;
+  test_clouds::addTable(table, 0.6f, 0.005f);
+  keepVisible(table, -1, 0);
+  return scene;
+}
+
 
 }  // namespace test_clouds

@@ -121,6 +121,11 @@ TEST(StageList, AListThatCannotRunIsRejectedWithItsReason) {
   EXPECT_NE(problemsOf({"curves", "curve_pairs", "cut", "islands", "footprints", "filter"}).find("no later 'cut'"),
             std::string::npos);
   EXPECT_TRUE(ss::stageListProblems({"curves", "curve_pairs", "cut", "filter"}).empty());
+  // occluder_gaps adds candidates aligned with their hypotheses: nothing may wait for a cut.
+  EXPECT_NE(problemsOf({"curves", "curve_pairs", "cut", "islands", "footprints", "occluder_gaps", "cut", "filter"})
+                .find("'occluder_gaps' (position 6) needs every earlier hypothesis cut"),
+            std::string::npos);
+  EXPECT_TRUE(ss::stageListProblems({"curves", "curve_pairs", "cut", "occluder_gaps", "refine", "filter"}).empty());
 
   // The configuration rejects such a list as a whole and keeps the previous one.
   ss::SegmentationConfig config;

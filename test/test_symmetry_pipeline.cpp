@@ -181,3 +181,12 @@ TEST(SymmetryMethod, ABoxOnABoxOfTheSameFootprintIsTwoObjectsByTheirColours) {
   const auto colorless = ss::makeSegmenter("symmetry", config)->segment(scene);
   EXPECT_LT(std::max(bestIoU(scene, colorless, 1), bestIoU(scene, colorless, 2)), 0.9);
 }
+
+TEST(SymmetryMethod, ABoxSeenEitherSideOfAPostInFrontIsOneObject) {
+  // Here the box's end edges pair up as curves, so its plane is found without occluder_gaps too
+  // (test_occluder_gaps.cpp has the pieces alone); the whole list must keep it one object.
+  const ss::Scene scene = test_clouds::boxBehindAPost();
+  const auto result = ss::makeSegmenter("symmetry", ss::SegmentationConfig{})->segment(scene);
+  EXPECT_GT(bestIoU(scene, result, 1), 0.9);
+  EXPECT_GT(bestIoU(scene, result, 2), 0.9);
+}

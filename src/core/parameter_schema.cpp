@@ -95,6 +95,8 @@ const Schema& schema() {
                             [](auto& c) -> auto& { return c.symmetry.islands; });
     s.section<FootprintParams>("symmetry.footprints", "stage footprints: planes for islands nothing covers",
                                [](auto& c) -> auto& { return c.symmetry.footprints; });
+    s.section<OccluderGapParams>("symmetry.occluder_gaps", "stage occluder_gaps: planes across a hidden gap between two pieces",
+                                 [](auto& c) -> auto& { return c.symmetry.occluder_gaps; });
     s.section<SymmetryFilterParams>("symmetry.filter", "stage filter: scores and thresholds, also for every later stage",
                                     [](auto& c) -> auto& { return c.symmetry.filter; });
     s.section<IslandSegmentParams>("symmetry.island_segments", "stage island_segments: islands a found plane explains",

@@ -1,4 +1,4 @@
-// Stage 13, composites: segments made of two objects split at their concave seam (see the header for why).
+// Stage 14, composites: segments made of two objects split at their concave seam (see the header for why).
 #include "symmetry_segmentation/symmetry/composite_segments.h"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Stage 11, island_segments: islands that one plane explains (see the header for why).
+// Stage 12, island_segments: islands that one plane explains (see the header for why).
 #include "symmetry_segmentation/symmetry/island_segments.h"
 
 #include "symmetry_segmentation/symmetry/pipeline_state.h"

@@ -1,4 +1,4 @@
-// Stage 12, mirror_twins: segments of two mirror-image objects split (see the header for why).
+// Stage 13, mirror_twins: segments of two mirror-image objects split (see the header for why).
 #include "symmetry_segmentation/symmetry/mirror_twins.h"
 
 #include <algorithm>

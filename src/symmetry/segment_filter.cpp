@@ -1,4 +1,4 @@
-// Stage 10, filter: the candidates that pass the paper's score thresholds (see the header).
+// Stage 11, filter: the candidates that pass the paper's score thresholds (see the header).
 #include "symmetry_segmentation/symmetry/segment_filter.h"
 
 #include <algorithm>

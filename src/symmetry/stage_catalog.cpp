@@ -12,6 +12,7 @@
 #include "symmetry_segmentation/symmetry/composite_segments.h"
 #include "symmetry_segmentation/symmetry/duplicate_segments.h"
 #include "symmetry_segmentation/symmetry/footprint_hypotheses.h"
+#include "symmetry_segmentation/symmetry/occluder_gaps.h"
 #include "symmetry_segmentation/symmetry/island_segments.h"
 #include "symmetry_segmentation/symmetry/islands.h"
 #include "symmetry_segmentation/symmetry/mirror_twins.h"
@@ -63,6 +64,9 @@ const std::vector<StageInfo>& stageCatalog() {
       {"footprints", K::HypothesisSource, "vertical planes through the footprint of islands no passing candidate covers",
        {P::Candidates, P::Islands}, {P::Hypotheses},
        [](const Config& c) { return made<FootprintStage>(c.symmetry.footprints, c.symmetry.filter); }},
+      {"occluder_gaps", K::CandidateProducer, "the plane across the hidden gap between two passing pieces that do not touch, cut; kept when the cut takes both",
+       {P::Candidates}, {P::Candidates},
+       [](const Config& c) { return made<OccluderGapStage>(c.symmetry.occluder_gaps, c.symmetry.filter); }},
       {"filter", K::CandidateFilter, "candidates whose occlusion and smoothness scores pass become the segments (paper)",
        {P::Candidates}, {P::Segments},
        [](const Config& c) { return made<FilterStage>(c.symmetry.filter); }},
@@ -135,6 +139,7 @@ std::vector<std::string> stageListProblems(const std::vector<std::string>& stage
   for (std::size_t i = 0; i < stages.size(); ++i) {
     if (stages[i] == "cut") last_cut = i + 1;
   }
+  bool uncut_hypotheses = false;
   for (std::size_t i = 0; i < stages.size(); ++i) {
     const StageInfo* info = findStage(stages[i]);
     if (!info) {
@@ -152,6 +157,14 @@ std::vector<std::string> stageListProblems(const std::vector<std::string>& stage
       problem("'" + info->name + "' (position " + std::to_string(i + 1) + ") needs " + productName(need) +
               ", which no stage before it makes (made by " + makers + ")");
     }
+    // occluder_gaps appends a hypothesis with its candidate: hypotheses still waiting for their
+    // cut would then be paired with the wrong candidates.
+    if (info->name == "occluder_gaps" && uncut_hypotheses) {
+      problem("'occluder_gaps' (position " + std::to_string(i + 1) +
+              ") needs every earlier hypothesis cut: list a 'cut' between the last hypothesis source and it");
+    }
+    if (info->kind == K::HypothesisSource) uncut_hypotheses = true;
+    if (info->name == "cut") uncut_hypotheses = false;
     for (Product product : info->makes) made_so_far[product] = true;
     if (info->kind == K::HypothesisSource && i + 1 > last_cut) {
       problem("'" + info->name + "' (position " + std::to_string(i + 1) + ") adds hypotheses no later 'cut' cuts");

@@ -1,5 +1,5 @@
 #pragma once
-// Stage 13, composites (our addition): one plane can be a symmetry of two objects at once (a bowl
+// Stage 14, composites (our addition): one plane can be a symmetry of two objects at once (a bowl
 // centred on a box), and its cut takes both and, being larger, wins deduplication. A segment that
 // two segments found alone make up (or one and the rest), apart or meeting only at concave creases
 // and each mirrored onto itself by its plane, is replaced by the two; parts that also run on into

@@ -1,5 +1,5 @@
 #pragma once
-// Stage 11, island_segments (our addition): an island (islands.h) that one of the found planes
+// Stage 12, island_segments (our addition): an island (islands.h) that one of the found planes
 // explains whole (it passes the filter) is added as a segment, so an object whose cut came out in
 // pieces - its plane a few degrees off, or one arm's plane (an L-shaped block, a mug and its
 // handle) - can still be reported whole; deduplication then prefers it to its pieces.

@@ -1,5 +1,5 @@
 #pragma once
-// Stage 12, mirror_twins (our addition): two like objects side by side (two bowls, two bottles)
+// Stage 13, mirror_twins (our addition): two like objects side by side (two bowls, two bottles)
 // are mirror images about the plane between them, and its cut takes both. A segment in separate
 // pieces that its plane mirrors onto each other is split when the sensor saw through the space
 // between them (observed free space); the pieces of one object seen around an occluder have

@@ -1,5 +1,5 @@
 #pragma once
-// Stage 14, nested (our addition): a cut may take a neighbour its plane mirrors into occluded
+// Stage 15, nested (our addition): a cut may take a neighbour its plane mirrors into occluded
 // space (a can on a box, the next box of a row), which is no evidence against it. When that
 // neighbour is also found alone, nested in the larger segment, and the larger segment's plane
 // does not mirror it onto scene points, it is taken out; a part the plane explains stays.

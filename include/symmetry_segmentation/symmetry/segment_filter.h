@@ -1,5 +1,5 @@
 #pragma once
-// Stage 10, filter (paper eq. 13-14): the candidates that look like whole symmetric objects
+// Stage 11, filter (paper eq. 13-14): the candidates that look like whole symmetric objects
 // become the segments - their reflections explained (occlusion score above s_occl: few land in
 // free space) and their boundary at creases (smoothness score below s_smooth: few smooth links
 // cut). The same test judges every segment the later stages make.

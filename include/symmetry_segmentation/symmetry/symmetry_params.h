@@ -203,6 +203,24 @@ inline void describeParameters(ParameterList<FootprintParams>& list) {
            "an island a passing segment covers to this share needs no planes");
 }
 
+/// Stage occluder_gaps: planes across the hidden gap between two pieces of one object.
+struct OccluderGapParams {
+  float min_gap = 0.02f;
+  float max_span = 0.4f;
+  float max_overlap = 0.7f;
+  float min_piece_coverage = 0.8f;
+};
+
+inline void describeParameters(ParameterList<OccluderGapParams>& list) {
+  list.add("min_gap", &OccluderGapParams::min_gap, 0.0, 1.0, "m",
+           "two pieces closer along the line between them touch: no plane across them")
+      .add("max_span", &OccluderGapParams::max_span, 0.01, 5.0, "m", "...nor across pieces longer than this together")
+      .add("max_overlap", &OccluderGapParams::max_overlap, 0.0, 1.0, "",
+           "candidates overlapping more (of the smaller) are the same piece")
+      .add("min_piece_coverage", &OccluderGapParams::min_piece_coverage, 0.0, 1.0, "",
+           "the plane's cut is a candidate when it takes this share of each piece");
+}
+
 /// Stage filter: the paper's scores (eq. 13-14) and which candidates are kept; the scores and
 /// thresholds also judge every segment later stages make.
 struct SymmetryFilterParams {
@@ -397,7 +415,7 @@ struct SymmetryParams {
   int threads = 0;
   bool depth_image_occupancy = true;
   std::vector<std::string> stages = {"curves",  "curve_pairs", "upright",         "cut",          "refine",
-                                     "islands", "footprints",  "cut",             "refine",       "filter",
+                                     "islands", "footprints",  "cut",             "occluder_gaps", "refine",      "filter",
                                      "island_segments",        "mirror_twins",    "composites",   "nested",
                                      "color_seams",            "object_size",     "dedup",        "object_bottoms"};
   NormalEdgeCurveParams curves;
@@ -407,6 +425,7 @@ struct SymmetryParams {
   SymmetryRefinementParams refine;
   IslandParams islands;
   FootprintParams footprints;
+  OccluderGapParams occluder_gaps;
   SymmetryFilterParams filter;
   IslandSegmentParams island_segments;
   MirrorTwinParams mirror_twins;
