@@ -1,4 +1,4 @@
-// Stage 16, color_seams: segments of flush objects split at their colour seams (see the header for why).
+// Stage 15, color_seams: segments of flush objects split at their colour seams (see the header for why).
 #include "symmetry_segmentation/symmetry/color_seams.h"
 
 #include <algorithm>

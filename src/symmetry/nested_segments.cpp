@@ -1,4 +1,4 @@
-// Stage 15, nested: foreign objects taken out of a larger segment (see the header for why).
+// Optional stage nested: foreign objects taken out of a larger segment (see the header for why).
 #include "symmetry_segmentation/symmetry/nested_segments.h"
 
 #include <algorithm>

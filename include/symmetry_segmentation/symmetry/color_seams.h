@@ -1,5 +1,5 @@
 #pragma once
-// Stage 16, color_seams (our addition): objects of different colours that touch at a concave
+// Stage 15, color_seams (our addition): objects of different colours that touch at a concave
 // crease (a bowl on a box, a short box against a taller one) can be one segment to the cut;
 // their colours part them. A segment of a few large uniform-colour regions meeting along such a
 // crease is split into them; colour edges on convex edges (a lid) or in print keep it whole. A

@@ -414,10 +414,10 @@ inline void describeParameters(ParameterList<StrayColorParams>& list) {
 struct SymmetryParams {
   int threads = 0;
   bool depth_image_occupancy = true;
-  std::vector<std::string> stages = {"curves",  "curve_pairs", "upright",         "cut",          "refine",
-                                     "islands", "footprints",  "cut",             "occluder_gaps", "refine",      "filter",
-                                     "island_segments",        "mirror_twins",    "composites",   "nested",
-                                     "color_seams",            "object_size",     "dedup",        "object_bottoms"};
+  std::vector<std::string> stages = {"curves",          "curve_pairs",  "upright",     "cut",        "refine",
+                                     "islands",         "footprints",   "cut",         "occluder_gaps", "refine",
+                                     "filter",          "island_segments", "mirror_twins", "composites", "color_seams",
+                                     "object_size",     "dedup",        "object_bottoms"};
   NormalEdgeCurveParams curves;
   CurvePairParams curve_pairs;
   UprightHypothesisParams upright;
