@@ -16,6 +16,8 @@
 #include <pcl/segmentation/extract_clusters.h>
 #include <pcl/segmentation/sac_segmentation.h>
 
+#include "symmetry_segmentation/quantile.h"
+
 namespace symmetry_segmentation {
 namespace {
 
@@ -36,15 +38,6 @@ struct PatchShape {
   float cover = 0.0f;   ///< Share of length x width its points' cells fill.
 };
 
-float trimmedSpan(std::vector<float>& values) {
-  const auto at = [&values](float quantile) {
-    const auto k = static_cast<std::ptrdiff_t>(quantile * static_cast<float>(values.size() - 1));
-    std::nth_element(values.begin(), values.begin() + k, values.end());
-    return values[static_cast<std::size_t>(k)];
-  };
-  return at(1.0f - kTrim) - at(kTrim);
-}
-
 PatchShape shapeOf(const Cloud& cloud, const std::vector<int>& points, const Eigen::Vector3f& normal, float cell) {
   const Eigen::Vector3f u0 = normal.unitOrthogonal();
   const Eigen::Vector3f v0 = normal.cross(u0);
@@ -63,9 +56,9 @@ PatchShape shapeOf(const Cloud& cloud, const std::vector<int>& points, const Eig
   PatchShape shape;
   std::vector<float> along(flat.size());
   for (std::size_t k = 0; k < flat.size(); ++k) along[k] = axes.col(1).dot(flat[k] - mean);
-  shape.length = trimmedSpan(along);
+  shape.length = trimmedSpan(along, kTrim);
   for (std::size_t k = 0; k < flat.size(); ++k) along[k] = axes.col(0).dot(flat[k] - mean);
-  shape.width = trimmedSpan(along);
+  shape.width = trimmedSpan(along, kTrim);
   // Cells of a grid in the plane that hold a point, against the cells of the extent's rectangle.
   std::unordered_set<long long> cells;
   for (const Eigen::Vector2f& p : flat) {

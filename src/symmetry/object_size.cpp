@@ -12,6 +12,7 @@
 #include <pcl/sample_consensus/model_types.h>
 #include <pcl/segmentation/sac_segmentation.h>
 
+#include "symmetry_segmentation/quantile.h"
 #include "symmetry_segmentation/symmetry/pipeline_state.h"
 
 namespace symmetry_segmentation {
@@ -20,17 +21,6 @@ namespace {
 constexpr int kPlaneIterations = 200;
 // Share of the points left out at either end of an extent.
 constexpr float kTrim = 0.05f;
-
-float trimmedSpan(std::vector<float>& values) {
-  const auto at = [&values](float quantile) {
-    const auto k = static_cast<std::ptrdiff_t>(quantile * static_cast<float>(values.size() - 1));
-    std::nth_element(values.begin(), values.begin() + k, values.end());
-    return values[static_cast<std::size_t>(k)];
-  };
-  const float low = at(kTrim);
-  const float high = at(1.0f - kTrim);
-  return high - low;
-}
 
 /// Extents of `points` along their principal axes, between the kTrim and 1 - kTrim quantiles:
 /// a few stray points of a neighbour or of the background do not make an object large.
@@ -48,7 +38,7 @@ Eigen::Matrix<float, Dims, 1> principalExtents(const std::vector<Eigen::Matrix<f
   std::vector<float> along(points.size());
   for (int d = 0; d < Dims; ++d) {
     for (std::size_t i = 0; i < points.size(); ++i) along[i] = axes.col(d).dot(points[i] - mean);
-    extents[d] = trimmedSpan(along);
+    extents[d] = trimmedSpan(along, kTrim);
   }
   return extents;
 }
@@ -71,7 +61,7 @@ Eigen::Vector3f segmentExtents(const Cloud& cloud, const std::vector<int>& point
       footprint.emplace_back(u.dot(p), v.dot(p));
       heights.push_back(normal.dot(p));
     }
-    extents << principalExtents<2>(footprint), trimmedSpan(heights);
+    extents << principalExtents<2>(footprint), trimmedSpan(heights, kTrim);
   } else {
     std::vector<Eigen::Vector3f> all;
     all.reserve(points.size());
@@ -114,9 +104,7 @@ float topHeight(const Cloud& cloud, const std::vector<int>& points, const PlaneC
   std::vector<float> heights;
   heights.reserve(points.size());
   for (int i : points) heights.push_back((table_plane.head<3>().dot(cloud[i].getVector3fMap()) + table_plane[3]) / norm);
-  const auto k = static_cast<std::ptrdiff_t>((1.0f - kTrim) * static_cast<float>(heights.size() - 1));
-  std::nth_element(heights.begin(), heights.begin() + k, heights.end());
-  return heights[static_cast<std::size_t>(k)];
+  return quantileOf(heights, 1.0f - kTrim);
 }
 
 void ObjectSizeStage::run(PipelineState& state) const {

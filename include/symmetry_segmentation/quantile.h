@@ -1,0 +1,22 @@
+#pragma once
+// Order statistics of a list of values, for extents that a few stray points must not widen.
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+namespace symmetry_segmentation {
+
+/// The value at `quantile` (0..1) of `values` (reordered; nearest rank below). Not empty.
+inline float quantileOf(std::vector<float>& values, float quantile) {
+  const auto k = static_cast<std::ptrdiff_t>(quantile * static_cast<float>(values.size() - 1));
+  std::nth_element(values.begin(), values.begin() + k, values.end());
+  return values[static_cast<std::size_t>(k)];
+}
+
+/// The span between the `trim` and 1 - `trim` quantiles of `values` (reordered). Not empty.
+inline float trimmedSpan(std::vector<float>& values, float trim) {
+  const float low = quantileOf(values, trim);
+  return quantileOf(values, 1.0f - trim) - low;
+}
+
+}  // namespace symmetry_segmentation
