@@ -2,6 +2,7 @@
 // Small hand-built clouds with known geometry for unit tests.
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include <Eigen/Core>
@@ -68,6 +69,24 @@ inline void addWall(symmetry_segmentation::Cloud& cloud, float y, float half_wid
   }
 }
 
+/// Whether the segment from `from` to `to` passes through `box` (slab test): a point seen from
+/// `from` is hidden by the box.
+inline bool segmentCrossesBox(const Eigen::Vector3f& from, const Eigen::Vector3f& to, const Eigen::AlignedBox3f& box) {
+  const Eigen::Vector3f step = to - from;
+  float enter = 0.0f, leave = 1.0f;
+  for (int d = 0; d < 3; ++d) {
+    if (std::fabs(step[d]) < 1e-9f) {
+      if (from[d] < box.min()[d] || from[d] > box.max()[d]) return false;
+      continue;
+    }
+    float t0 = (box.min()[d] - from[d]) / step[d], t1 = (box.max()[d] - from[d]) / step[d];
+    if (t0 > t1) std::swap(t0, t1);
+    enter = std::max(enter, t0);
+    leave = std::min(leave, t1);
+  }
+  return enter < leave;
+}
+
 /// One view of a box 30 cm long behind a post 6 cm wide, from a sensor in front: only what faces
 /// the sensor and no other box hides (labels: 1 the long box, 2 the post, 0 the table).
 inline symmetry_segmentation::Scene boxBehindAPost() {
@@ -76,17 +95,8 @@ inline symmetry_segmentation::Scene boxBehindAPost() {
       {Eigen::Vector3f(-0.15f, 0.10f, 0.0f), Eigen::Vector3f(0.15f, 0.18f, 0.08f)},
       {Eigen::Vector3f(-0.03f, -0.06f, 0.0f), Eigen::Vector3f(0.03f, -0.02f, 0.16f)}};
   const auto hidden = [&](const Eigen::Vector3f& point, int own) {
-    const Eigen::Vector3f step = point - sensor;
     for (int b = 0; b < static_cast<int>(boxes.size()); ++b) {
-      if (b == own) continue;
-      float enter = 0.0f, leave = 1.0f;
-      for (int d = 0; d < 3; ++d) {
-        float t0 = (boxes[b].min()[d] - sensor[d]) / step[d], t1 = (boxes[b].max()[d] - sensor[d]) / step[d];
-        if (t0 > t1) std::swap(t0, t1);
-        enter = std::max(enter, t0);
-        leave = std::min(leave, t1);
-      }
-      if (enter < leave) return true;
+      if (b != own && segmentCrossesBox(sensor, point, boxes[b])) return true;
     }
     return false;
   };

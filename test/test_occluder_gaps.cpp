@@ -60,23 +60,8 @@ struct BoxBehindAPost {
     return ss::OccupancyMap::fromRayCasting(seen, {kSensor});
   }
   bool hiddenByAnObject(const Eigen::Vector3f& point) const {
-    const Eigen::Vector3f step = point - kSensor;
-    for (const Eigen::AlignedBox3f& box : boxes) {
-      // Slab test of the segment sensor -> point against the box.
-      float enter = 0.0f, leave = 1.0f;
-      for (int d = 0; d < 3; ++d) {
-        if (std::fabs(step[d]) < 1e-9f) {
-          if (kSensor[d] < box.min()[d] || kSensor[d] > box.max()[d]) enter = 2.0f;
-          continue;
-        }
-        float t0 = (box.min()[d] - kSensor[d]) / step[d], t1 = (box.max()[d] - kSensor[d]) / step[d];
-        if (t0 > t1) std::swap(t0, t1);
-        enter = std::max(enter, t0);
-        leave = std::min(leave, t1);
-      }
-      if (enter < leave) return true;
-    }
-    return false;
+    return std::any_of(boxes.begin(), boxes.end(),
+                       [&](const Eigen::AlignedBox3f& box) { return test_clouds::segmentCrossesBox(kSensor, point, box); });
   }
 };
 
@@ -149,7 +134,7 @@ TEST(OccluderGaps, TheStageAddsTheCutThatJoinsBothPiecesAndNothingElse) {
     state.hypotheses.push_back(hypothesis);
     state.candidates.push_back(candidate);
   }
-  ss::OccluderGapStage(config.symmetry.occluder_gaps, config.symmetry.filter).run(state);
+  ss::OccluderGapStage(config.symmetry.occluder_gaps, config.symmetry.filter, config.symmetry.dedup).run(state);
   ASSERT_EQ(state.candidates.size(), 3u);
   ASSERT_EQ(state.hypotheses.size(), 3u) << "hypotheses and candidates stay aligned";
   const ss::CandidateSegment& joined = state.candidates[2];
@@ -168,6 +153,6 @@ TEST(OccluderGaps, TheStageAddsTheCutThatJoinsBothPiecesAndNothingElse) {
   right_and_more.push_back(post.front());
   std::sort(right_and_more.begin(), right_and_more.end());
   state.candidates[1].points = right_and_more;
-  ss::OccluderGapStage(strict, config.symmetry.filter).run(state);
+  ss::OccluderGapStage(strict, config.symmetry.filter, config.symmetry.dedup).run(state);
   EXPECT_EQ(state.candidates.size(), 2u);
 }

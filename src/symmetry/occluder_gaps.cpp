@@ -4,7 +4,10 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include <pcl/common/centroid.h>
+
 #include "symmetry_segmentation/parallel_for.h"
+#include "symmetry_segmentation/quantile.h"
 #include "symmetry_segmentation/symmetry/duplicate_segments.h"
 #include "symmetry_segmentation/symmetry/pipeline_state.h"
 #include "symmetry_segmentation/symmetry/scene_evidence.h"
@@ -19,9 +22,9 @@ namespace {
 constexpr float kEndTrim = 0.02f;
 
 Eigen::Vector3f centroidOf(const Cloud& cloud, const std::vector<int>& points) {
-  Eigen::Vector3f sum = Eigen::Vector3f::Zero();
-  for (int i : points) sum += cloud[i].getVector3fMap();
-  return sum / static_cast<float>(points.size());
+  Eigen::Vector4f centroid;
+  pcl::compute3DCentroid(cloud, points, centroid);
+  return centroid.head<3>();
 }
 
 /// The kEndTrim and 1 - kEndTrim quantiles of the points' positions along `axis`.
@@ -29,13 +32,8 @@ std::pair<float, float> extentAlong(const Cloud& cloud, const std::vector<int>& 
   std::vector<float> along;
   along.reserve(points.size());
   for (int i : points) along.push_back(axis.dot(cloud[i].getVector3fMap()));
-  const auto at = [&along](float quantile) {
-    const auto k = static_cast<std::ptrdiff_t>(quantile * static_cast<float>(along.size() - 1));
-    std::nth_element(along.begin(), along.begin() + k, along.end());
-    return along[static_cast<std::size_t>(k)];
-  };
-  const float low = at(kEndTrim);
-  return {low, at(1.0f - kEndTrim)};
+  const float low = quantileOf(along, kEndTrim);
+  return {low, quantileOf(along, 1.0f - kEndTrim)};
 }
 
 }  // namespace
@@ -79,7 +77,7 @@ void OccluderGapStage::run(PipelineState& state) const {
   for (const CandidateSegment& candidate : state.candidates) {
     if (!passesFilter(candidate, filter_)) continue;
     const bool seen = std::any_of(pieces.begin(), pieces.end(), [&](const CandidateSegment* piece) {
-      return overlapOfSmaller(piece->points, candidate.points) > params_.max_overlap;
+      return overlapOfSmaller(piece->points, candidate.points) > dedup_.max_overlap;
     });
     if (!seen) pieces.push_back(&candidate);
   }

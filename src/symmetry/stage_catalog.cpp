@@ -66,7 +66,7 @@ const std::vector<StageInfo>& stageCatalog() {
        [](const Config& c) { return made<FootprintStage>(c.symmetry.footprints, c.symmetry.filter); }},
       {"occluder_gaps", K::CandidateProducer, "the plane across the hidden gap between two passing pieces that do not touch, cut; kept when the cut takes both",
        {P::Candidates}, {P::Candidates},
-       [](const Config& c) { return made<OccluderGapStage>(c.symmetry.occluder_gaps, c.symmetry.filter); }},
+       [](const Config& c) { return made<OccluderGapStage>(c.symmetry.occluder_gaps, c.symmetry.filter, c.symmetry.dedup); }},
       {"filter", K::CandidateFilter, "candidates whose occlusion and smoothness scores pass become the segments (paper)",
        {P::Candidates}, {P::Segments},
        [](const Config& c) { return made<FilterStage>(c.symmetry.filter); }},

@@ -27,17 +27,20 @@ std::vector<SymmetryHypothesis> occluderGapHypothesis(const Cloud& cloud, const 
                                                       const std::vector<int>& second, const OccupancyMap& occupancy,
                                                       const OccluderGapParams& params);
 
-/// The stage: per pair of distinct passing candidates with a hidden gap between them, the cut
-/// of their plane, appended with its hypothesis when it takes both (candidates stay aligned
+/// The stage: per pair of distinct passing candidates (overlapping by at most dedup's
+/// max_overlap: more is one piece cut by several planes) with a hidden gap between them, the
+/// cut of their plane, appended with its hypothesis when it takes both (candidates stay aligned
 /// with hypotheses, so it runs after a cut, never between a hypothesis source and its cut).
 class OccluderGapStage : public Stage {
  public:
-  OccluderGapStage(const OccluderGapParams& params, const SymmetryFilterParams& filter) : params_(params), filter_(filter) {}
+  OccluderGapStage(const OccluderGapParams& params, const SymmetryFilterParams& filter, const DuplicateParams& dedup)
+      : params_(params), filter_(filter), dedup_(dedup) {}
   void run(PipelineState& state) const override;
 
  private:
   OccluderGapParams params_;
   SymmetryFilterParams filter_;
+  DuplicateParams dedup_;
 };
 
 }  // namespace symmetry_segmentation

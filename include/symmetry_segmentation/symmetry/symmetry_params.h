@@ -207,7 +207,6 @@ inline void describeParameters(ParameterList<FootprintParams>& list) {
 struct OccluderGapParams {
   float min_gap = 0.02f;
   float max_span = 0.4f;
-  float max_overlap = 0.7f;
   float min_piece_coverage = 0.8f;
 };
 
@@ -215,8 +214,6 @@ inline void describeParameters(ParameterList<OccluderGapParams>& list) {
   list.add("min_gap", &OccluderGapParams::min_gap, 0.0, 1.0, "m",
            "two pieces closer along the line between them touch: no plane across them")
       .add("max_span", &OccluderGapParams::max_span, 0.01, 5.0, "m", "...nor across pieces longer than this together")
-      .add("max_overlap", &OccluderGapParams::max_overlap, 0.0, 1.0, "",
-           "candidates overlapping more (of the smaller) are the same piece")
       .add("min_piece_coverage", &OccluderGapParams::min_piece_coverage, 0.0, 1.0, "",
            "the plane's cut is a candidate when it takes this share of each piece");
 }
