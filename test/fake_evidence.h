@@ -33,6 +33,9 @@ class FakeEvidence : public ss::SceneEvidence {
       [](const std::vector<int>&, const ss::SymmetryPlane&) { return ss::SegmentScores{1.0f, 0.0f}; };
   /// Default: nowhere.
   std::function<bool(const Eigen::Vector3f&)> free = [](const Eigen::Vector3f&) { return false; };
+  /// Where a reflection that lands on no point is in observed free space (reflection(): landing
+  /// Free, foreground cost 1). Default: unset, such reflections are occluded.
+  std::function<bool(const Eigen::Vector3f&)> free_landing;
   /// Default: from the cloud's normals (SceneEvidence).
   std::function<bool(int a, int b)> crease;
   /// Creases that depend on the angle asked for (first when set).
@@ -46,6 +49,13 @@ class FakeEvidence : public ss::SceneEvidence {
     evidence.landing = evidence.match >= 0 ? ss::ReflectionLanding::OnPoint : ss::ReflectionLanding::Occluded;
     evidence.foreground_strength = evidence.match >= 0 ? 1.0f : 0.0f;
     evidence.cost_background = evidence.foreground_strength;
+    if (evidence.match < 0 && free_landing) {
+      const Eigen::Vector3f p = cloud_[index].getVector3fMap();
+      if (free_landing(p - 2.0f * (plane.normal.dot(p) + plane.distance) * plane.normal)) {
+        evidence.landing = ss::ReflectionLanding::Free;
+        evidence.cost_foreground = 1.0f;
+      }
+    }
     return evidence;
   }
   ss::SegmentScores scores(const std::vector<int>& points, const ss::SymmetryPlane& plane) const override {

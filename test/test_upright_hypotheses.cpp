@@ -83,6 +83,48 @@ TEST(UprightHypotheses, CylinderStripsProposeThePlaneBisectingWhatWasSeen) {
   EXPECT_TRUE(hasPlane(hypotheses, Eigen::Vector3f::UnitX(), axis, 8.0f, 0.003f));
 }
 
+TEST(UprightHypotheses, AMugsHandleOrientsThePlaneThroughItsAxis) {
+  // A mug seen over 200 degrees centred on -y, its handle sticking out 3 cm at -40 degrees: the
+  // plane through the axis must contain the handle, not bisect the seen arc (mirrored there the
+  // handle lands in free space). Space within 2 cm of the wall is not known to be free, so only
+  // the handle's outer half contradicts a wrong plane, and it lies beyond the 1.2-radius column.
+  ss::Cloud cloud;
+  std::vector<int> labels;
+  const Eigen::Vector3f axis(0.1f, 0.2f, 0.0f);
+  const float radius = 0.04f;
+  const float centre = -static_cast<float>(M_PI) / 2.0f;
+  const float half = 100.0f * static_cast<float>(M_PI) / 180.0f;
+  addCylinderSide(cloud, labels, axis, radius, 0.1f, centre - half, centre + half, 1, 1);
+  const float handle_angle = -40.0f * static_cast<float>(M_PI) / 180.0f;
+  const Eigen::Vector3f out(std::cos(handle_angle), std::sin(handle_angle), 0.0f);
+  const Eigen::Vector3f across = kUp.cross(out);
+  for (float r = radius + 0.005f; r <= radius + 0.03f; r += 0.005f) {
+    for (float z = 0.02f; z <= 0.08f; z += 0.005f) {
+      cloud.push_back(point(axis + r * out + Eigen::Vector3f(0, 0, z), -across));
+      labels.push_back(2);
+    }
+  }
+  auto evidence = landing(cloud);
+  evidence.free_landing = [&](const Eigen::Vector3f& p) {
+    return Eigen::Vector2f(p.x() - axis.x(), p.y() - axis.y()).norm() > radius + 0.02f;
+  };
+  const auto planeThroughAxis = [&](const ss::UprightHypothesisParams& params) {
+    const auto hypotheses = ss::uprightHypotheses(evidence, labels, kUp, params);
+    const auto through = std::find_if(hypotheses.begin(), hypotheses.end(), [&](const ss::SymmetryHypothesis& h) {
+      return !h.anchor.empty() && distanceToPlane(h.plane, axis) < 0.003f;
+    });
+    EXPECT_NE(through, hypotheses.end());
+    return through == hypotheses.end() ? ss::SymmetryPlane{} : through->plane;
+  };
+  const ss::SymmetryPlane handle_plane{across, -across.dot(axis)};
+  EXPECT_LT(ss::planeAngleDeg(planeThroughAxis(ss::UprightHypothesisParams{}), handle_plane), 8.0f);
+
+  ss::UprightHypothesisParams column_only;
+  column_only.attached_reach = 1.2f;  // the handle's outer half is not scored
+  EXPECT_GT(ss::planeAngleDeg(planeThroughAxis(column_only), handle_plane), 20.0f)
+      << "the handle orients the plane even without its outer half (else this test shows nothing)";
+}
+
 TEST(UprightHypotheses, TwoTouchingCansMergedIntoOneSurfaceProposeAPlaneThroughEachAxis) {
   // Their sides meet with equal normals and supervoxel merging makes one surface of both. Each
   // can gets a plane through its own axis, anchored on its own side, and not the plane through

@@ -212,6 +212,26 @@ bool onAnotherRoundSurface(const Eigen::Vector3f& p, const Axis& axis, const std
   return false;
 }
 
+/// The points of `candidates` linked to `seeds` by chains of steps shorter than `link`.
+std::vector<int> pointsAttached(const Cloud& cloud, const std::vector<int>& seeds, std::vector<int> candidates,
+                                float link) {
+  std::vector<int> attached;
+  std::vector<int> frontier = seeds;
+  while (!frontier.empty() && !candidates.empty()) {
+    std::vector<int> reached, rest;
+    for (int c : candidates) {
+      const bool linked = std::any_of(frontier.begin(), frontier.end(), [&](int f) {
+        return (cloud.points[c].getVector3fMap() - cloud.points[f].getVector3fMap()).squaredNorm() < link * link;
+      });
+      (linked ? reached : rest).push_back(c);
+    }
+    attached.insert(attached.end(), reached.begin(), reached.end());
+    frontier.swap(reached);
+    candidates.swap(rest);
+  }
+  return attached;
+}
+
 /// How a reflection counts when orienting a plane through an axis. Every plane through a true
 /// axis is a symmetry, so what decides is contradiction (reflections into free space: a mug's
 /// handle mirrored beside it); matches only break ties, else the bisector of whatever arc the
@@ -242,18 +262,23 @@ SymmetryHypothesis bestPlaneThroughAxis(const SceneEvidence& evidence, const Upr
   low -= params.column_height_margin;
   high += params.column_height_margin;
   const float reach = 1.2f * axis_radius + params.surface_tolerance;
-  std::vector<int> around;
+  const float attached_reach = std::max(reach, params.attached_reach * axis_radius + params.surface_tolerance);
+  std::vector<int> around, beyond;
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     Eigen::Vector3f offset = cloud.points[i].getVector3fMap() - axis_point;
     const float height = offset.dot(up) + up.dot(axis_point);
     if (height < low || height > high) continue;
     offset -= offset.dot(up) * up;
-    if (offset.squaredNorm() >= reach * reach) continue;
+    if (offset.squaredNorm() >= attached_reach * attached_reach) continue;
     // A touching round neighbour's side is its own business: its axis would tilt the choice
     // toward the plane through both axes, and the cut would take both objects.
     if (onAnotherRoundSurface(cloud.points[i].getVector3fMap(), axis, other_axes, up, params.surface_tolerance)) continue;
-    around.push_back(static_cast<int>(i));
+    (offset.squaredNorm() < reach * reach ? around : beyond).push_back(static_cast<int>(i));
   }
+  // A handle sticks out of the column, and it is what orients a mug's plane: mirrored beside
+  // itself it lands in free space. Whatever hangs on to the column counts with it.
+  const std::vector<int> attached = pointsAttached(cloud, around, beyond, 1.5f * params.surface_tolerance);
+  around.insert(around.end(), attached.begin(), attached.end());
   const Eigen::Vector3f helper = std::fabs(up.x()) < 0.9f ? Eigen::Vector3f::UnitX() : Eigen::Vector3f::UnitY();
   const Eigen::Vector3f e1 = up.cross(helper).normalized();
   const Eigen::Vector3f e2 = up.cross(e1);

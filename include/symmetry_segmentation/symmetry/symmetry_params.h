@@ -93,6 +93,7 @@ struct UprightHypothesisParams {
   int axis_plane_angles = 24;
   float column_height_margin = 0.02f;
   float surface_tolerance = 0.01f;
+  float attached_reach = 2.0f;
   float contradiction_tolerance = 1.0f;
   float match_tie_break = 0.05f;
   float distinct_angle_deg = 6.0f;
@@ -118,6 +119,8 @@ inline void describeParameters(ParameterList<UprightHypothesisParams>& list) {
            "the points scored around an axis reach this far above and below its surface")
       .add("surface_tolerance", &P::surface_tolerance, 0.0, 0.5, "m",
            "a point this close to a surface of revolution lies on it; the column also reaches this far beyond 1.2 radii")
+      .add("attached_reach", &P::attached_reach, 1.2, 5.0, "radii",
+           "points out to this many radii from the axis that hang on to the column (a mug's handle) are scored too")
       .add("contradiction_tolerance", &P::contradiction_tolerance, 0.0, 1000.0, "points",
            "orientations whose free-space contradiction is within this of the least are told apart by matches")
       .add("match_tie_break", &P::match_tie_break, 0.0, 1.0, "",
