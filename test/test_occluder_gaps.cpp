@@ -156,3 +156,39 @@ TEST(OccluderGaps, TheStageAddsTheCutThatJoinsBothPiecesAndNothingElse) {
   ss::OccluderGapStage(strict, config.symmetry.filter, config.symmetry.dedup).run(state);
   EXPECT_EQ(state.candidates.size(), 2u);
 }
+
+TEST(OccluderGaps, PiecesShowingUnequalSharesOfTheWidthGetTheirPlaneTurned) {
+  // The same view, but one piece is only the box's front face and the other its front and top:
+  // the line between their centroids runs askew across the box, and so does the plane across
+  // it. Turned about the up direction, a plane joins them.
+  const ss::Scene scene = test_clouds::boxBehindAPost();
+  ss::SegmentationConfig config;
+  const auto run = [&](const ss::OccluderGapParams& params) {
+    ss::PipelineState state = ss::preparePipeline(scene, config.preprocessing, config.symmetry);
+    std::vector<int> left, right;
+    for (int v = 0; v < static_cast<int>(state.cloud->size()); ++v) {
+      if (scene.labels[state.prepared.voxel_to_input[v].front()] != 1) continue;
+      const Eigen::Vector3f p = state.cloud->points[v].getVector3fMap();
+      if (p.x() < -0.05f && p.y() < 0.105f) left.push_back(v);
+      if (p.x() > 0.05f) right.push_back(v);
+    }
+    for (const auto* piece : {&left, &right}) {
+      ss::CandidateSegment candidate;
+      candidate.points = *piece;
+      candidate.plane.normal = Eigen::Vector3f::UnitX();
+      candidate.scores.occlusion = 1.0f;
+      state.hypotheses.push_back(ss::SymmetryHypothesis{});
+      state.candidates.push_back(candidate);
+    }
+    ss::OccluderGapStage(params, config.symmetry.filter, config.symmetry.dedup).run(state);
+    std::vector<ss::SymmetryPlane> joined;
+    for (std::size_t k = 2; k < state.candidates.size(); ++k) joined.push_back(state.candidates[k].plane);
+    return joined;
+  };
+  ss::OccluderGapParams untouched = config.symmetry.occluder_gaps;
+  untouched.turn_step_deg = 0.0f;
+  EXPECT_TRUE(run(untouched).empty()) << "the askew plane joins them anyway (else this test shows nothing)";
+  const auto joined = run(config.symmetry.occluder_gaps);
+  ASSERT_FALSE(joined.empty());
+  for (const auto& plane : joined) EXPECT_GT(std::fabs(plane.normal.x()), std::cos(25.0f * static_cast<float>(M_PI) / 180.0f));
+}

@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include <cmath>
+
+#include <Eigen/Geometry>
 #include <pcl/common/centroid.h>
 
 #include "symmetry_segmentation/parallel_for.h"
@@ -34,6 +37,20 @@ std::pair<float, float> extentAlong(const Cloud& cloud, const std::vector<int>& 
   for (int i : points) along.push_back(axis.dot(cloud[i].getVector3fMap()));
   const float low = quantileOf(along, kEndTrim);
   return {low, quantileOf(along, 1.0f - kEndTrim)};
+}
+
+/// `plane` turned by `angle_deg` about `up`, halfway between the outer ends of both pieces along its new normal.
+SymmetryHypothesis turnedAbout(const SymmetryHypothesis& hypothesis, const Cloud& cloud, const std::vector<int>& first,
+                               const std::vector<int>& second, const Eigen::Vector3f& up, float angle_deg) {
+  SymmetryHypothesis turned = hypothesis;
+  const Eigen::Vector3f normal =
+      (Eigen::AngleAxisf(angle_deg * static_cast<float>(M_PI) / 180.0f, up) * hypothesis.plane.normal).normalized();
+  const auto [first_low, first_high] = extentAlong(cloud, first, normal);
+  const auto [second_low, second_high] = extentAlong(cloud, second, normal);
+  turned.plane.normal = normal;
+  turned.plane.distance = -0.5f * (std::min(first_low, second_low) + std::max(first_high, second_high));
+  turned.plane = canonicalPlane(turned.plane);
+  return turned;
 }
 
 }  // namespace
@@ -81,47 +98,61 @@ void OccluderGapStage::run(PipelineState& state) const {
     });
     if (!seen) pieces.push_back(&candidate);
   }
-  struct Pair {
+  // Per pair the plane across the gap, and the same turned about the up direction: the line
+  // between the pieces' centroids is the object's axis only when both show the same share of its
+  // width, and a box lying askew under another is seen in pieces that do not (OSD learn18).
+  struct PlaneAcross {
     SymmetryHypothesis hypothesis;
     const CandidateSegment* first;
     const CandidateSegment* second;
   };
-  std::vector<Pair> pairs;
+  std::vector<PlaneAcross> planes;
+  std::vector<std::size_t> first_plane_of_pair;  // a pair's planes are consecutive from here
   for (std::size_t a = 0; a < pieces.size(); ++a) {
     for (std::size_t b = a + 1; b < pieces.size(); ++b) {
       if (overlapOfSmaller(pieces[a]->points, pieces[b]->points) > 0.0f) continue;
       for (auto& hypothesis :
            occluderGapHypothesis(*state.cloud, pieces[a]->points, pieces[b]->points, *state.occupancy, params_)) {
-        pairs.push_back({std::move(hypothesis), pieces[a], pieces[b]});
+        first_plane_of_pair.push_back(planes.size());
+        planes.push_back({std::move(hypothesis), pieces[a], pieces[b]});
+        if (!state.up || params_.turn_step_deg <= 0.0f) continue;
+        const SymmetryHypothesis across = planes.back().hypothesis;  // a copy: planes grows
+        for (float angle = params_.turn_step_deg; angle <= params_.max_turn_deg + 1e-3f; angle += params_.turn_step_deg) {
+          for (const float signed_angle : {-angle, angle}) {
+            planes.push_back({turnedAbout(across, *state.cloud, pieces[a]->points, pieces[b]->points, *state.up, signed_angle),
+                             pieces[a], pieces[b]});
+          }
+        }
       }
     }
   }
+  first_plane_of_pair.push_back(planes.size());
   // Cut here rather than in a later cut stage: only a cut that joins both pieces is a candidate.
   // Any other would be one more piece for the stages that split segments into found parts.
-  std::vector<CandidateSegment> cuts(pairs.size());
-  parallelFor(pairs.size(), state.threads, [&](std::size_t k) {
+  std::vector<CandidateSegment> cuts(planes.size());
+  std::vector<float> coverage(planes.size(), 0.0f);  // of the piece it covers less
+  parallelFor(planes.size(), state.threads, [&](std::size_t k) {
     CandidateSegment& cut = cuts[k];
-    cut.plane = pairs[k].hypothesis.plane;
-    cut.points = state.graph->segment(cut.plane, pairs[k].hypothesis.anchor);
-    const auto covers = [&](const CandidateSegment* piece) {
-      return static_cast<float>(intersectionSize(cut.points, piece->points)) >=
-             params_.min_piece_coverage * static_cast<float>(piece->points.size());
+    cut.plane = planes[k].hypothesis.plane;
+    cut.points = state.graph->segment(cut.plane, planes[k].hypothesis.anchor);
+    const auto share = [&](const CandidateSegment* piece) {
+      return static_cast<float>(intersectionSize(cut.points, piece->points)) / static_cast<float>(piece->points.size());
     };
-    if (!covers(pairs[k].first) || !covers(pairs[k].second)) {
-      cut.points.clear();
-      return;
-    }
-    cut.scores = state.evidence->scores(cut.points, cut.plane);
+    coverage[k] = std::min(share(planes[k].first), share(planes[k].second));
   });
-  // Hypotheses and candidates stay index-aligned (candidates[i] is the cut of hypotheses[i]).
+  // Every plane whose cut takes enough of both pieces is a candidate: the one taking most is not
+  // always the best segment (learn18), so refine and dedup choose, as for any other candidates.
   std::size_t joined = 0;
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    if (cuts[k].points.empty()) continue;
-    state.hypotheses.push_back(std::move(pairs[k].hypothesis));
+  for (std::size_t k = 0; k < planes.size(); ++k) {
+    if (coverage[k] < params_.min_piece_coverage) continue;
+    // Hypotheses and candidates stay index-aligned (candidates[i] is the cut of hypotheses[i]).
+    cuts[k].scores = state.evidence->scores(cuts[k].points, cuts[k].plane);
+    state.hypotheses.push_back(std::move(planes[k].hypothesis));
     state.candidates.push_back(std::move(cuts[k]));
     ++joined;
   }
-  state.count("pairs", pairs.size());
+  state.count("pairs", first_plane_of_pair.size() - 1);
+  state.count("cuts", planes.size());
   state.count("joined", joined);
 }
 

@@ -4,8 +4,10 @@
 // object. Its own symmetry plane lies in the hidden gap, where no curve pair proposes it (OSD's
 // occluded frames: 0.63 -> 0.88). For two passing candidates that do not touch, lie apart along
 // the line between them and have unobserved space (not free) between them, this cuts with the
-// plane halfway between their outer ends, anchored on both, and keeps the cut as a candidate
-// when it takes both pieces; the refine listed after it refines it, dedup then prefers it to the
+// plane halfway between their outer ends, anchored on both - and with the plane turned about the
+// up direction in steps (the line between the pieces is askew when they show unequal shares of
+// the object's width: OSD stacked 0.79 -> 0.87, occluded 0.88 -> 0.97) - and keeps each cut as a
+// candidate that takes both pieces; the refine listed after it refines it, dedup then prefers it to the
 // pieces (larger at equal smoothness). Two objects seen through a gap are never joined: the gap
 // is free (mirror_twins splits those).
 #include <vector>
@@ -29,7 +31,8 @@ std::vector<SymmetryHypothesis> occluderGapHypothesis(const Cloud& cloud, const 
 
 /// The stage: per pair of distinct passing candidates (overlapping by at most dedup's
 /// max_overlap: more is one piece cut by several planes) with a hidden gap between them, the
-/// cut of their plane, appended with its hypothesis when it takes both (candidates stay aligned
+/// cuts of their plane and of it turned about the table's up by multiples of turn_step_deg up to
+/// max_turn_deg, each appended with its hypothesis when it takes both (candidates stay aligned
 /// with hypotheses, so it runs after a cut, never between a hypothesis source and its cut).
 class OccluderGapStage : public Stage {
  public:

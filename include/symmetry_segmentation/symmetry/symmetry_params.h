@@ -211,6 +211,8 @@ struct OccluderGapParams {
   float min_gap = 0.02f;
   float max_span = 0.4f;
   float min_piece_coverage = 0.8f;
+  float max_turn_deg = 20.0f;
+  float turn_step_deg = 10.0f;
 };
 
 inline void describeParameters(ParameterList<OccluderGapParams>& list) {
@@ -218,7 +220,11 @@ inline void describeParameters(ParameterList<OccluderGapParams>& list) {
            "two pieces closer along the line between them touch: no plane across them")
       .add("max_span", &OccluderGapParams::max_span, 0.01, 5.0, "m", "...nor across pieces longer than this together")
       .add("min_piece_coverage", &OccluderGapParams::min_piece_coverage, 0.0, 1.0, "",
-           "the plane's cut is a candidate when it takes this share of each piece");
+           "the plane's cut is a candidate when it takes this share of each piece")
+      .add("max_turn_deg", &OccluderGapParams::max_turn_deg, 0.0, 90.0, "deg",
+           "the plane is also tried turned about the up direction by up to this...")
+      .add("turn_step_deg", &OccluderGapParams::turn_step_deg, 0.0, 90.0, "deg",
+           "...in steps of this (0: not turned); per pair the cut taking most of both pieces counts");
 }
 
 /// Stage filter: the paper's scores (eq. 13-14) and which candidates are kept; the scores and
