@@ -234,7 +234,7 @@ struct SymmetryFilterParams {
   float s_smooth = 0.02f;
   float smooth_normal_angle_deg = 15.0f;
   int min_segment_points = 40;
-  float plane_offset_search = 0.006f;
+  float plane_offset_search = 0.012f;
 };
 
 inline void describeParameters(ParameterList<SymmetryFilterParams>& list) {
