@@ -138,6 +138,21 @@ TEST(SymmetryMethod, ARoundObjectCentredOnABoxIsItsOwnObject) {
       << "without the split the pair is one segment (else this test shows nothing)";
 }
 
+TEST(SymmetryMethod, ARoundObjectOnABoxDoesNotShareItsAxisOfRevolution) {
+  // The stacked scene, seed 1: a round object (4) standing centred on a wider box (3), each
+  // found alone. The box's rounded edges turn its normals about the round object's axis;
+  // coaxial_pieces must not take the box for a piece of the same surface of revolution.
+  const ss::Scene scene = generated(ss::synthetic::SceneKind::Stacked, 1);
+  ss::SegmentationConfig config = highRecall();
+  const auto result = ss::makeSegmenter("symmetry", config)->segment(scene);
+  EXPECT_GT(bestIoU(scene, result, 3), 0.9);
+  EXPECT_GT(bestIoU(scene, result, 4), 0.9);
+  config.symmetry.coaxial_pieces.min_axis_share = 0.0f;  // any fitted axis counts
+  const auto joined = ss::makeSegmenter("symmetry", config)->segment(scene);
+  EXPECT_LT(std::max(bestIoU(scene, joined, 3), bestIoU(scene, joined, 4)), 0.9)
+      << "without the share test they are one segment (else this test shows nothing)";
+}
+
 TEST(SymmetryMethod, TwoTouchingRoundObjectsAreFoundEach) {
   // The touching scene, seed 2: a bottle or can (6) and a cone (7) standing side by side. Their
   // sides merge into one surface where they touch; each axis must still propose its own plane,

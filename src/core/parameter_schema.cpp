@@ -109,6 +109,8 @@ const Schema& schema() {
                                    [](auto& c) -> auto& { return c.symmetry.nested; });
     s.section<ColorSeamParams>("symmetry.color_seams", "stage color_seams: flush objects of different colours",
                                [](auto& c) -> auto& { return c.symmetry.color_seams; });
+    s.section<CoaxialPieceParams>("symmetry.coaxial_pieces", "stage coaxial_pieces: pieces of one surface of revolution joined",
+                                  [](auto& c) -> auto& { return c.symmetry.coaxial_pieces; });
     s.section<ObjectSizeParams>("symmetry.object_size", "stage object_size: only what a robot could grasp is an object",
                                 [](auto& c) -> auto& { return c.symmetry.object_size; });
     s.section<DuplicateParams>("symmetry.dedup", "stage dedup: one segment per object",

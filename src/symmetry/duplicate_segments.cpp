@@ -1,4 +1,4 @@
-// Stage 17, dedup: one segment per object (see the header).
+// Stage 18, dedup: one segment per object (see the header).
 #include "symmetry_segmentation/symmetry/duplicate_segments.h"
 
 #include <algorithm>

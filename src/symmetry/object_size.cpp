@@ -1,4 +1,4 @@
-// Stage 16, object_size: only what a robot could grasp is an object (see the header).
+// Stage 17, object_size: only what a robot could grasp is an object (see the header).
 #include "symmetry_segmentation/symmetry/object_size.h"
 
 #include <algorithm>

@@ -8,6 +8,7 @@
 
 #include "symmetry_segmentation/errors.h"
 #include "symmetry_segmentation/segmentation_config.h"
+#include "symmetry_segmentation/symmetry/coaxial_pieces.h"
 #include "symmetry_segmentation/symmetry/color_seams.h"
 #include "symmetry_segmentation/symmetry/composite_segments.h"
 #include "symmetry_segmentation/symmetry/duplicate_segments.h"
@@ -85,6 +86,9 @@ const std::vector<StageInfo>& stageCatalog() {
       {"color_seams", K::SegmentRewriter, "flush objects of different colours are split at their colour seam",
        {P::Candidates, P::Segments}, {},
        [](const Config& c) { return made<ColorSeamStage>(c.symmetry.color_seams, c.symmetry.filter, c.preprocessing.voxel_size); }},
+      {"coaxial_pieces", K::SegmentRewriter, "segments sharing a vertical axis of revolution and nearly touching (a bowl's inner and outer wall) are joined",
+       {P::Segments}, {},
+       [](const Config& c) { return made<CoaxialPieceStage>(c.symmetry.coaxial_pieces, c.symmetry.upright, c.symmetry.filter, c.symmetry.dedup); }},
       {"object_size", K::SegmentRewriter, "a segment larger than a graspable object, or mostly one wide plane, is dropped",
        {P::Segments}, {},
        [](const Config& c) { return made<ObjectSizeStage>(c.symmetry.object_size, c.preprocessing.voxel_size); }},

@@ -90,12 +90,11 @@ bool horizontalNormal(const Cloud& cloud, int i, const Eigen::Vector3f& up, Eige
   return true;
 }
 
-/// Whether the points' horizontal normal directions turn continuously: about min_normal_spread_deg
-/// of arc in steps of at most 10 degrees. Two flat faces meeting at an edge (normals in two
-/// bundles) have normal lines that cross, yet no axis.
+}  // namespace
+
 bool coversAnArc(const Cloud& cloud, const std::vector<int>& points, const Eigen::Vector3f& up,
                  const UprightHypothesisParams& params) {
-  constexpr int kBins = 36;  // Fixed: 10 degrees each, the step the arc test above allows.
+  constexpr int kBins = 36;  // Fixed: 10 degrees each, the step the arc test allows.
   std::vector<int> count(kBins, 0);
   const Eigen::Vector3f helper = std::fabs(up.x()) < 0.9f ? Eigen::Vector3f::UnitX() : Eigen::Vector3f::UnitY();
   const Eigen::Vector3f e1 = up.cross(helper).normalized();
@@ -118,20 +117,10 @@ bool coversAnArc(const Cloud& cloud, const std::vector<int>& points, const Eigen
   return longest >= needed;
 }
 
-struct Axis {
-  std::vector<int> points;  ///< The surface points whose normal lines pass near it.
-  Eigen::Vector3f point;
-  float radius = 0.0f;
-};
-
-/// Vertical axes of the surfaces of revolution a merged surface covers. Usually one; where round
-/// objects touch, their sides meet with equal normals and merge into one surface, and each
-/// object's axis is found by sampling pairs of normal lines (seeded: the same surface always
-/// gives the same axes).
-std::vector<Axis> fitVerticalAxes(const Cloud& cloud, const std::vector<int>& points, const Eigen::Vector3f& up,
-                                  const UprightHypothesisParams& params) {
+std::vector<VerticalAxis> fitVerticalAxes(const Cloud& cloud, const std::vector<int>& points, const Eigen::Vector3f& up,
+                                          const UprightHypothesisParams& params) {
   constexpr int kSamples = 64;  // Fixed: pairs of normal lines tried per axis (a cost bound).
-  std::vector<Axis> axes;
+  std::vector<VerticalAxis> axes;
   std::vector<int> remaining;
   for (int i : points) {
     Eigen::Vector3f d;
@@ -139,7 +128,7 @@ std::vector<Axis> fitVerticalAxes(const Cloud& cloud, const std::vector<int>& po
   }
   std::mt19937 random(12345u);
   while (static_cast<int>(axes.size()) < params.max_axes_per_surface && static_cast<int>(remaining.size()) >= params.min_surface_points) {
-    Axis axis;
+    VerticalAxis axis;
     if (fitVerticalAxis(cloud, remaining, up, params, axis.point, axis.radius)) {
       axis.points = remaining;
       axes.push_back(std::move(axis));
@@ -192,17 +181,19 @@ std::vector<Axis> fitVerticalAxes(const Cloud& cloud, const std::vector<int>& po
   return axes;
 }
 
-float distanceFromAxis(const Eigen::Vector3f& p, const Axis& axis, const Eigen::Vector3f& up) {
+namespace {
+
+float distanceFromAxis(const Eigen::Vector3f& p, const VerticalAxis& axis, const Eigen::Vector3f& up) {
   Eigen::Vector3f offset = p - axis.point;
   offset -= offset.dot(up) * up;
   return offset.norm();
 }
 
 /// Whether p lies on the surface of revolution of another axis and not on that of `axis`.
-bool onAnotherRoundSurface(const Eigen::Vector3f& p, const Axis& axis, const std::vector<Axis>& other_axes,
+bool onAnotherRoundSurface(const Eigen::Vector3f& p, const VerticalAxis& axis, const std::vector<VerticalAxis>& other_axes,
                            const Eigen::Vector3f& up, float tolerance) {
   if (std::fabs(distanceFromAxis(p, axis, up) - axis.radius) < tolerance) return false;
-  for (const Axis& other : other_axes) {
+  for (const VerticalAxis& other : other_axes) {
     if (&other == &axis) continue;
     if (std::fabs(distanceFromAxis(p, other, up) - other.radius) < tolerance &&
         (other.point - axis.point).norm() > tolerance) {
@@ -245,7 +236,7 @@ float reflectionScore(const ReflectionEvidence& evidence, const UprightHypothesi
 /// surface belongs to, as far as it was seen) are best explained by their reflections. A surface
 /// is often only a strip of its object, so the strip alone would pick its own bisector.
 SymmetryHypothesis bestPlaneThroughAxis(const SceneEvidence& evidence, const UprightHypothesisParams& params,
-                                        const Axis& axis, const std::vector<Axis>& other_axes, const Eigen::Vector3f& up) {
+                                        const VerticalAxis& axis, const std::vector<VerticalAxis>& other_axes, const Eigen::Vector3f& up) {
   const Cloud& cloud = evidence.cloud();
   const std::vector<int>& surface = axis.points;
   const Eigen::Vector3f& axis_point = axis.point;
@@ -319,7 +310,7 @@ std::vector<SymmetryHypothesis> uprightHypotheses(const SceneEvidence& evidence,
   }
 
   std::vector<SymmetryHypothesis> result;
-  std::vector<Axis> axes;
+  std::vector<VerticalAxis> axes;
   const float vertical_sin = std::sin(params.face_tilt_deg * kDegToRad);
   const float horizontal_cos = std::cos(params.face_tilt_deg * kDegToRad);
   for (const Surface& surface : surfaces) {
@@ -359,11 +350,11 @@ std::vector<SymmetryHypothesis> uprightHypotheses(const SceneEvidence& evidence,
     }
     const bool flat = mean_normal.norm() / static_cast<float>(n) > std::cos(params.flat_normal_spread_deg * kDegToRad);
     if (flat) continue;
-    for (Axis& axis : fitVerticalAxes(cloud, surface.points, up, params)) axes.push_back(std::move(axis));
+    for (VerticalAxis& axis : fitVerticalAxes(cloud, surface.points, up, params)) axes.push_back(std::move(axis));
   }
   // Any vertical plane through an axis is a symmetry plane of a surface of revolution; the one
   // that maps most of the seen part of the object onto itself bisects what was seen.
-  for (const Axis& axis : axes) {
+  for (const VerticalAxis& axis : axes) {
     result.push_back(bestPlaneThroughAxis(evidence, params, axis, axes, up));
     result.back().anchor = axis.points;
   }

@@ -1,5 +1,5 @@
 #pragma once
-// Stage 17, dedup (paper): one segment per object. Many hypotheses find the same
+// Stage 18, dedup (paper): one segment per object. Many hypotheses find the same
 // object (curve pairs and surfaces propose its planes several times over, islands add it whole);
 // of segments that overlap by most of the smaller one, the one with the cleanest boundary stays.
 

@@ -1,5 +1,5 @@
 #pragma once
-// Stage 18, object_bottoms (our addition): each segment gets back its sides' points within the
+// Stage 19, object_bottoms (our addition): each segment gets back its sides' points within the
 // table margin, which preprocessing dropped with the table (object_bottoms.h: 5-15 % of a small
 // box, enough to push a correct segment under IoU 0.9). Runs last, on the final segments, since
 // each strip goes to the segment nearest above it.

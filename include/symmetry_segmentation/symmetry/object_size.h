@@ -1,5 +1,5 @@
 #pragma once
-// Stage 16, object_size (our addition): only what a robot could grasp is an object. A plane
+// Stage 17, object_size (our addition): only what a robot could grasp is an object. A plane
 // is mirror-symmetric about every plane across it, so a wall, a table remnant or a shelf passes
 // every symmetry test; what gives them away is their size. A segment larger than max_extent
 // along any axis (height over the table, or its footprint's sides), or mostly one plane wider

@@ -417,13 +417,29 @@ inline void describeParameters(ParameterList<StrayColorParams>& list) {
       .add("max_stray_share", &StrayColorParams::max_stray_share, 0.0, 1.0, "", "a stray piece has at most this share of its segment");
 }
 
+/// Stage coaxial_pieces: pieces of one surface of revolution seen apart are joined.
+struct CoaxialPieceParams {
+  float max_axis_distance = 0.02f;
+  float max_gap = 0.04f;
+  float min_axis_share = 0.6f;
+};
+
+inline void describeParameters(ParameterList<CoaxialPieceParams>& list) {
+  list.add("max_axis_distance", &CoaxialPieceParams::max_axis_distance, 0.0, 0.5, "m",
+           "two segments whose vertical axes of revolution are closer than this share one...")
+      .add("max_gap", &CoaxialPieceParams::max_gap, 0.0, 0.5, "m",
+           "...when they come closer than this, with no observed free space where they come closest")
+      .add("min_axis_share", &CoaxialPieceParams::min_axis_share, 0.0, 1.0, "",
+           "a segment turns about an axis when this share of its side points' normal lines pass it (upright.max_axis_residual)");
+}
+
 struct SymmetryParams {
   int threads = 0;
   bool depth_image_occupancy = true;
   std::vector<std::string> stages = {"curves",          "curve_pairs",  "upright",     "cut",        "refine",
                                      "islands",         "footprints",   "cut",         "occluder_gaps", "refine",
                                      "filter",          "island_segments", "mirror_twins", "composites", "color_seams",
-                                     "object_size",     "dedup",        "object_bottoms"};
+                                     "coaxial_pieces",  "object_size",  "dedup",       "object_bottoms"};
   NormalEdgeCurveParams curves;
   CurvePairParams curve_pairs;
   UprightHypothesisParams upright;
@@ -438,6 +454,7 @@ struct SymmetryParams {
   CompositeSegmentParams composites;
   NestedSegmentParams nested;
   ColorSeamParams color_seams;
+  CoaxialPieceParams coaxial_pieces;
   ObjectSizeParams object_size;
   DuplicateParams dedup;
   StrayColorParams stray_color_pieces;

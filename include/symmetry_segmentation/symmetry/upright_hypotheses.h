@@ -17,6 +17,26 @@
 
 namespace symmetry_segmentation {
 
+/// A vertical axis of a surface of revolution.
+struct VerticalAxis {
+  std::vector<int> points;  ///< The surface points whose normal lines pass near it.
+  Eigen::Vector3f point;    ///< On the axis, at the height of the points' centroid.
+  float radius = 0.0f;      ///< Mean horizontal distance of the points from it.
+};
+
+/// Vertical axes of the surfaces of revolution `points` cover, most points first. Usually one;
+/// where round objects touch, their sides meet with equal normals and merge into one surface,
+/// and each object's axis is found by sampling pairs of normal lines (seeded: the same points
+/// always give the same axes). `points` must be sorted.
+std::vector<VerticalAxis> fitVerticalAxes(const Cloud& cloud, const std::vector<int>& points, const Eigen::Vector3f& up,
+                                          const UprightHypothesisParams& params);
+
+/// Whether the points' horizontal normal directions turn continuously: about the upright
+/// min_normal_spread_deg of arc in steps of at most 10 degrees. Two flat faces meeting at an
+/// edge (normals in two bundles) have normal lines that cross, yet no axis.
+bool coversAnArc(const Cloud& cloud, const std::vector<int>& points, const Eigen::Vector3f& up,
+                 const UprightHypothesisParams& params);
+
 /// Planes proposed from each merged surface of `evidence.cloud()` (labels from
 /// mergedSegmentLabels; 0 = none). `up` is the unit normal of the supporting plane. Each
 /// hypothesis' support is its surface's size; planes through an axis are anchored on the axis'
