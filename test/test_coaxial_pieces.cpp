@@ -87,6 +87,7 @@ TEST(CoaxialPieces, ClosestApproachIsTheMiddleOfTheNearestPair) {
   const auto [middle, distance] = ss::closestApproach(cloud, first, second);
   EXPECT_NEAR(distance, std::hypot(0.03f, 0.01f), 1e-4f);
   EXPECT_TRUE(middle.isApprox(Eigen::Vector3f(0.115f, 0.005f, 0.0f), 1e-3f)) << middle.transpose();
+  EXPECT_TRUE(std::isinf(ss::closestApproach(cloud, first, {}).second));
 }
 
 TEST(CoaxialPieces, ABowlsOuterFrontAndInnerBackWallAreJoined) {

@@ -19,6 +19,7 @@ namespace symmetry_segmentation {
 
 std::pair<Eigen::Vector3f, float> closestApproach(const Cloud& cloud, const std::vector<int>& first,
                                                   const std::vector<int>& second) {
+  if (first.empty() || second.empty()) return {Eigen::Vector3f::Zero(), std::numeric_limits<float>::infinity()};
   pcl::PointCloud<pcl::PointXYZ>::Ptr first_points(new pcl::PointCloud<pcl::PointXYZ>);
   for (int i : first) first_points->push_back(pcl::PointXYZ(cloud[i].x, cloud[i].y, cloud[i].z));
   pcl::KdTreeFLANN<pcl::PointXYZ> tree;

@@ -23,8 +23,8 @@
 
 namespace symmetry_segmentation {
 
-/// The middle of the closest pair of points of `first` and `second` (indices into `cloud`,
-/// both non-empty), and their distance.
+/// The middle of the closest pair of points of `first` and `second` (indices into `cloud`), and
+/// their distance (infinite when either is empty).
 std::pair<Eigen::Vector3f, float> closestApproach(const Cloud& cloud, const std::vector<int>& first,
                                                   const std::vector<int>& second);
 
