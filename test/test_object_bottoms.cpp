@@ -86,3 +86,55 @@ TEST(ObjectBottoms, NothingOutsideTheRegionOfInterestIsAdded) {
     EXPECT_TRUE(box.scene.region_of_interest->contains((*box.scene.cloud)[i].getVector3fMap())) << i;
   }
 }
+
+TEST(ObjectBottoms, ACameraFrameWithoutNormalsGetsThemFromItsPixelGrid) {
+  // An organized frame (optical frame: y down, z ahead) of a wall 1 m ahead standing on a floor
+  // 0.4 m below the camera, no normals: the wall's foot within the margin comes back, with
+  // normals from the pixel grid as the working cloud's; the floor, facing up, stays out. (A 3 cm
+  // margin: within about a centimetre of the corner the pixel window blends the floor's normal
+  // into the wall's, and those few rows stay out.)
+  constexpr int kWidth = 160, kHeight = 200;
+  constexpr float kFocal = 300.0f, kCenterRow = 40.0f, kFloorY = 0.4f;
+  ss::Scene scene;
+  scene.cloud = std::make_shared<ss::Cloud>(kWidth, kHeight);
+  for (int v = 0; v < kHeight; ++v) {
+    for (int u = 0; u < kWidth; ++u) {
+      const Eigen::Vector3f ray((u - kWidth / 2.0f) / kFocal, (v - kCenterRow) / kFocal, 1.0f);
+      const float t = ray.y() > 0.0f ? std::min(1.0f, kFloorY / ray.y()) : 1.0f;
+      ss::PointT& p = scene.cloud->at(u, v);
+      p.getVector3fMap() = t * ray;
+      p.r = p.g = p.b = 128;
+      p.normal_x = p.normal_y = p.normal_z = NAN;
+    }
+  }
+  scene.has_normals = false;
+  scene.sensor_origins = {Eigen::Vector3f::Zero()};
+  scene.table_plane = ss::PlaneCoefficients(0.0f, -1.0f, 0.0f, kFloorY);
+  ss::PreprocessParams params;
+  params.adaptive_table_margin = false;
+  params.table_margin = 0.03f;
+  params.crop_to_support = false;
+  params.background_extent = 0.0f;
+  params.max_object_height = 0.0f;
+  const auto onWall = [&](int i) { return std::fabs((*scene.cloud)[i].z - 1.0f) < 1e-4f; };
+  const ss::PreprocessedScene prepared = ss::preprocess(scene, params);
+  ASSERT_GT(prepared.organized_normal_smoothing, 0.0f);
+  std::vector<ss::Segment> segments(1);
+  std::size_t wall_in_margin = 0;
+  for (int i = 0; i < static_cast<int>(scene.cloud->size()); ++i) {
+    if (!onWall(i)) continue;
+    if (prepared.input_to_voxel[i] >= 0) segments[0].indices.push_back(i);
+    else ++wall_in_margin;
+  }
+  ASSERT_GT(wall_in_margin, 100u) << "the margin must have taken the wall's foot";
+  const std::vector<int> kept = segments[0].indices;
+  const std::size_t added = ss::restoreObjectBottoms(scene, prepared, params.voxel_size, segments, {});
+  EXPECT_GT(added, wall_in_margin / 2) << "most of the wall's foot comes back";
+  for (int i : segments[0].indices) EXPECT_TRUE(onWall(i)) << "a floor point joined the wall";
+
+  // Without pixel-grid normals (a cloud that is no camera frame) nothing tells sides from table.
+  ss::PreprocessedScene without = prepared;
+  without.organized_normal_smoothing = 0.0f;
+  segments[0].indices = kept;
+  EXPECT_EQ(ss::restoreObjectBottoms(scene, without, params.voxel_size, segments, {}), 0u);
+}

@@ -261,6 +261,7 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
   Cloud::Ptr kept_with_normals;
   if (!scene.has_normals && params.organized_normal_smoothing > 0.0f) {
     kept_with_normals = pointsWithOrganizedNormals(input, finite, out.viewpoint, params.organized_normal_smoothing);
+    if (kept_with_normals) out.organized_normal_smoothing = params.organized_normal_smoothing;
   }
   VoxelGridResult grid;
   if (kept_with_normals) {
