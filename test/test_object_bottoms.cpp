@@ -118,7 +118,8 @@ TEST(ObjectBottoms, ACameraFrameWithoutNormalsGetsThemFromItsPixelGrid) {
   params.max_object_height = 0.0f;
   const auto onWall = [&](int i) { return std::fabs((*scene.cloud)[i].z - 1.0f) < 1e-4f; };
   const ss::PreprocessedScene prepared = ss::preprocess(scene, params);
-  ASSERT_GT(prepared.organized_normal_smoothing, 0.0f);
+  ASSERT_FALSE(prepared.table_band_normals.empty());
+  ASSERT_EQ(prepared.table_band_normals.size(), prepared.table_band.size());
   std::vector<ss::Segment> segments(1);
   std::size_t wall_in_margin = 0;
   for (int i = 0; i < static_cast<int>(scene.cloud->size()); ++i) {
@@ -134,7 +135,8 @@ TEST(ObjectBottoms, ACameraFrameWithoutNormalsGetsThemFromItsPixelGrid) {
 
   // Without pixel-grid normals (a cloud that is no camera frame) nothing tells sides from table.
   ss::PreprocessedScene without = prepared;
-  without.organized_normal_smoothing = 0.0f;
+  without.table_band.clear();
+  without.table_band_normals.clear();
   segments[0].indices = kept;
   EXPECT_EQ(ss::restoreObjectBottoms(scene, without, params.voxel_size, segments, {}), 0u);
 }

@@ -34,7 +34,7 @@ inline void describeParameters(ParameterList<ObjectBottomParams>& list) {
 /// within the table margin whose own normal runs across the table's and which are linked,
 /// directly or through other such points, to the segment's points within the link distance
 /// (each goes to the segment of the nearest such point); sorted. All empty without a table, or
-/// without input normals unless `prepared` got them from the frame's pixel grid.
+/// without input normals unless `prepared` got the table band's from the frame's pixel grid.
 std::vector<std::vector<int>> objectBottoms(const Scene& scene, const PreprocessedScene& prepared, float voxel_size,
                                             const std::vector<std::vector<int>>& segments,
                                             const ObjectBottomParams& params);

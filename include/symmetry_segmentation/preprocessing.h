@@ -69,10 +69,11 @@ struct PreprocessedScene {
   PlaneCoefficients table_plane = PlaneCoefficients::Zero();  ///< Normal points away from the table top.
   std::optional<SupportPolygon> support_polygon;  ///< The table's extent, when cropped to it.
   Eigen::Vector3f viewpoint = Eigen::Vector3f::Zero();         ///< Used to orient normals.
-  /// A camera frame without normals got them from its pixel grid over this window (pixels);
-  /// 0 otherwise. Points dropped later (an object's bottom in the table margin) can get theirs
-  /// the same way.
-  float organized_normal_smoothing = 0.0f;
+  /// A camera frame without normals gets them from its pixel grid, the points dropped within
+  /// the table margin too (an object's bottom among them): those points (sorted input indices)
+  /// and their normals (NaN where the grid gives none). Empty otherwise.
+  std::vector<int> table_band;
+  std::vector<Eigen::Vector3f> table_band_normals;
   /// Finite input points left out, by reason (checked in this order): why an object is missing.
   struct Dropped {
     std::size_t out_of_range = 0;  ///< Farther than max_range from the viewpoint.

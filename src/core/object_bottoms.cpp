@@ -3,10 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <pcl/kdtree/kdtree_flann.h>
 
-#include "symmetry_segmentation/organized_normals.h"
 #include "symmetry_segmentation/point_validity.h"
 
 namespace symmetry_segmentation {
@@ -15,20 +15,25 @@ std::vector<std::vector<int>> objectBottoms(const Scene& scene, const Preprocess
                                             const std::vector<std::vector<int>>& segments,
                                             const ObjectBottomParams& params) {
   std::vector<std::vector<int>> added(segments.size());
-  // A camera frame without normals had them from its pixel grid; its dropped points get theirs
-  // the same way.
-  const bool organized_normals = !scene.has_normals && prepared.organized_normal_smoothing > 0.0f;
-  if (!prepared.has_table || !(scene.has_normals || organized_normals) || !scene.cloud || segments.empty()) return added;
+  // A camera frame without normals got them from its pixel grid, the table band's too.
+  const bool band_normals = !scene.has_normals && !prepared.table_band_normals.empty();
+  if (!prepared.has_table || !(scene.has_normals || band_normals) || !scene.cloud || segments.empty()) return added;
   const Cloud& input = *scene.cloud;
   const Eigen::Vector3f up = prepared.table_plane.head<3>();
   const float up_norm = up.norm();
   if (!(up_norm > 0.0f)) return added;
   const float reach = params.link_distance > 0.0f ? params.link_distance : voxel_size;
 
-  // Dropped points within the margin of the plane on either side (the table's noise spreads
-  // both ways)...
+  // Dropped side points: within the margin of the plane on either side (the table's noise spreads
+  // both ways), normal across the table.
   auto height = [&](const PointT& p) { return (up.dot(p.getVector3fMap()) + prepared.table_plane[3]) / up_norm; };
-  std::vector<int> band;
+  auto normalOf = [&](int i) -> Eigen::Vector3f {
+    if (!band_normals) return input[i].getNormalVector3fMap();
+    const auto at = std::lower_bound(prepared.table_band.begin(), prepared.table_band.end(), i);
+    if (at == prepared.table_band.end() || *at != i) return Eigen::Vector3f::Constant(std::numeric_limits<float>::quiet_NaN());
+    return prepared.table_band_normals[at - prepared.table_band.begin()];
+  };
+  std::vector<int> candidates;
   for (std::size_t i = 0; i < input.size(); ++i) {
     if (prepared.input_to_voxel[i] >= 0) continue;
     const PointT& p = input[i];
@@ -37,21 +42,10 @@ std::vector<std::vector<int>> objectBottoms(const Scene& scene, const Preprocess
     if (!scene.inRegionOfInterest(p.getVector3fMap())) continue;
     const float h = height(p);
     if (h < -prepared.table_margin || h > prepared.table_margin) continue;
-    band.push_back(static_cast<int>(i));
-  }
-  Cloud::Ptr band_with_normals;
-  if (organized_normals) {
-    band_with_normals = pointsWithOrganizedNormals(input, band, prepared.viewpoint, prepared.organized_normal_smoothing);
-    if (!band_with_normals) return added;
-  }
-  // ...whose normal runs across the table: an object's side, not the table.
-  std::vector<int> candidates;
-  for (std::size_t k = 0; k < band.size(); ++k) {
-    const PointT& with_normal = band_with_normals ? band_with_normals->points[k] : input[band[k]];
-    const Eigen::Vector3f n = with_normal.getNormalVector3fMap();
+    const Eigen::Vector3f n = normalOf(static_cast<int>(i));
     const float n_norm = n.norm();
     if (!n.allFinite() || !(n_norm > 0.0f) || std::fabs(n.dot(up)) >= params.max_side_normal_cos * n_norm * up_norm) continue;
-    candidates.push_back(band[k]);
+    candidates.push_back(static_cast<int>(i));
   }
   if (candidates.empty()) return added;
 

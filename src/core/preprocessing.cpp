@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numeric>
 
@@ -19,6 +20,41 @@
 
 namespace symmetry_segmentation {
 namespace {
+
+// How far (pixels) from a kept pixel the table band's pixels get normals: a bottom strip a few
+// pixels high under its object, with room for the noise of its edge.
+constexpr int kBandPixelReach = 12;
+
+/// The pixels of `candidates` within `reach` pixels (a square) of a pixel of `kept`, in order.
+std::vector<int> pixelsNear(std::uint32_t width, std::uint32_t height, const std::vector<int>& kept,
+                            const std::vector<int>& candidates, int reach) {
+  const int w = static_cast<int>(width), h = static_cast<int>(height);
+  // Dilation by a square as two running counts: along the rows, then along the columns.
+  std::vector<int> marked(static_cast<std::size_t>(w) * h, 0), across(marked.size(), 0);
+  for (int i : kept) marked[i] = 1;
+  for (int y = 0; y < h; ++y) {
+    int count = 0;
+    for (int x = 0; x < w + reach; ++x) {
+      if (x < w) count += marked[y * w + x];
+      if (x - 2 * reach - 1 >= 0) count -= marked[y * w + x - 2 * reach - 1];
+      if (x - reach >= 0 && x - reach < w) across[y * w + x - reach] = count > 0;
+    }
+  }
+  std::vector<int> near;
+  std::vector<int> column_count(static_cast<std::size_t>(w) * h, 0);
+  for (int x = 0; x < w; ++x) {
+    int count = 0;
+    for (int y = 0; y < h + reach; ++y) {
+      if (y < h) count += across[y * w + x];
+      if (y - 2 * reach - 1 >= 0) count -= across[(y - 2 * reach - 1) * w + x];
+      if (y - reach >= 0 && y - reach < h) column_count[(y - reach) * w + x] = count;
+    }
+  }
+  for (int i : candidates) {
+    if (column_count[i] > 0) near.push_back(i);
+  }
+  return near;
+}
 
 // Below this the table leaves slivers of itself above the cut, and they are mirror images of
 // each other about any vertical plane: a symmetric "object" the cut happily joins to the real one.
@@ -230,6 +266,7 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
       above.reserve(finite.size());
       for (std::size_t k = 0; k < finite.size(); ++k) {
         if (distances[k] <= out.table_margin) {
+          if (distances[k] >= -out.table_margin) out.table_band.push_back(finite[k]);
           ++out.dropped.on_table;
         } else if (distances[k] > max_height) {
           ++out.dropped.too_high;
@@ -258,10 +295,23 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
 
   // A camera frame without normals gets them from its pixel grid, at the sensor's resolution;
   // the voxels average them.
+  // The table band's too, in the same pass, for object_bottoms: the band pixels near a kept
+  // pixel (an object's bottom lies under its object in the image; the rest is the table).
   Cloud::Ptr kept_with_normals;
-  if (!scene.has_normals && params.organized_normal_smoothing > 0.0f) {
-    kept_with_normals = pointsWithOrganizedNormals(input, finite, out.viewpoint, params.organized_normal_smoothing);
-    if (kept_with_normals) out.organized_normal_smoothing = params.organized_normal_smoothing;
+  if (!scene.has_normals && params.organized_normal_smoothing > 0.0f && input.isOrganized()) {
+    out.table_band = pixelsNear(input.width, input.height, finite, out.table_band, kBandPixelReach);
+    std::vector<int> kept_and_band = finite;
+    kept_and_band.insert(kept_and_band.end(), out.table_band.begin(), out.table_band.end());
+    kept_with_normals =
+        pointsWithOrganizedNormals(input, kept_and_band, out.viewpoint, params.organized_normal_smoothing);
+  }
+  if (kept_with_normals) {
+    for (std::size_t k = finite.size(); k < kept_with_normals->size(); ++k) {
+      out.table_band_normals.push_back(kept_with_normals->points[k].getNormalVector3fMap());
+    }
+    kept_with_normals->resize(finite.size());
+  } else {
+    out.table_band.clear();
   }
   VoxelGridResult grid;
   if (kept_with_normals) {
