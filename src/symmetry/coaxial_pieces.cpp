@@ -9,6 +9,7 @@
 
 #include <pcl/kdtree/kdtree_flann.h>
 
+#include "symmetry_segmentation/quantile.h"
 #include "symmetry_segmentation/symmetry/duplicate_segments.h"
 #include "symmetry_segmentation/symmetry/pipeline_state.h"
 #include "symmetry_segmentation/symmetry/scene_evidence.h"
@@ -16,6 +17,12 @@
 #include "symmetry_segmentation/symmetry/upright_hypotheses.h"
 
 namespace symmetry_segmentation {
+namespace {
+
+// Share of a segment's points left out at its top and bottom: a stray point moves no end.
+constexpr float kHeightTrim = 0.05f;
+
+}  // namespace
 
 std::pair<Eigen::Vector3f, float> closestApproach(const Cloud& cloud, const std::vector<int>& first,
                                                   const std::vector<int>& second) {
@@ -58,6 +65,22 @@ std::optional<Eigen::Vector3f> CoaxialPieceStage::revolutionAxis(const Cloud& cl
   return axis;
 }
 
+float heightOverlap(const Cloud& cloud, const std::vector<int>& first, const std::vector<int>& second,
+                    const Eigen::Vector3f& up) {
+  if (first.empty() || second.empty()) return 0.0f;
+  const auto span = [&](const std::vector<int>& points) {
+    std::vector<float> heights;
+    heights.reserve(points.size());
+    for (int i : points) heights.push_back(up.dot(cloud[i].getVector3fMap()));
+    return std::make_pair(quantileOf(heights, kHeightTrim), quantileOf(heights, 1.0f - kHeightTrim));
+  };
+  const auto [first_low, first_high] = span(first);
+  const auto [second_low, second_high] = span(second);
+  const float shorter = std::min(first_high - first_low, second_high - second_low);
+  if (!(shorter > 0.0f)) return 0.0f;
+  return std::max(0.0f, std::min(first_high, second_high) - std::max(first_low, second_low)) / shorter;
+}
+
 void CoaxialPieceStage::run(PipelineState& state) const {
   std::size_t joined = 0;
   if (!state.up) {
@@ -77,7 +100,11 @@ void CoaxialPieceStage::run(PipelineState& state) const {
       if (apart.norm() > params_.max_axis_distance) continue;
       const CandidateSegment& first = state.segments[a];
       const CandidateSegment& second = state.segments[b];
-      if (overlapOfSmaller(first.points, second.points) > dedup_.max_overlap) continue;  // one piece already
+      // Pieces seen apart share no point (sharing some, they are two cuts of one region, or two
+      // objects; learn41: a bowl turned over on a tin, and a cut holding both).
+      if (overlapOfSmaller(first.points, second.points) > 0.0f) continue;
+      // A bowl's walls span the same heights; a bowl turned over on a tin stands above it.
+      if (heightOverlap(cloud, first.points, second.points, up) < params_.min_height_overlap) continue;
       const auto [middle, gap] = closestApproach(cloud, first.points, second.points);
       if (gap > params_.max_gap || state.occupancy->classify(middle) == Occupancy::Free) continue;
       CandidateSegment joint;

@@ -88,7 +88,7 @@ const std::vector<StageInfo>& stageCatalog() {
        [](const Config& c) { return made<ColorSeamStage>(c.symmetry.color_seams, c.symmetry.filter, c.preprocessing.voxel_size); }},
       {"coaxial_pieces", K::SegmentRewriter, "segments sharing a vertical axis of revolution and nearly touching (a bowl's inner and outer wall) are joined",
        {P::Segments}, {},
-       [](const Config& c) { return made<CoaxialPieceStage>(c.symmetry.coaxial_pieces, c.symmetry.upright, c.symmetry.filter, c.symmetry.dedup); }},
+       [](const Config& c) { return made<CoaxialPieceStage>(c.symmetry.coaxial_pieces, c.symmetry.upright, c.symmetry.filter); }},
       {"object_size", K::SegmentRewriter, "a segment larger than a graspable object, or mostly one wide plane, is dropped",
        {P::Segments}, {},
        [](const Config& c) { return made<ObjectSizeStage>(c.symmetry.object_size, c.preprocessing.voxel_size); }},

@@ -5,11 +5,12 @@
 // own, and the graph cut keeps one connected piece, so the object comes out as two segments
 // (OSD learn37/38). What says they are one object is rotational symmetry: both walls turn
 // about the same vertical axis. Two segments whose axes of revolution (fitted as the upright
-// stage fits them) are within max_axis_distance, that come within max_gap of each other with
-// no observed free space where they come closest, are joined when their union passes the
-// filter under the plane of either; dedup then prefers the union (larger at equal smoothness).
-// Two cans one behind the other have axes a diameter apart; a fruit lying in a bowl is seen
-// across free space.
+// stage fits them) are within max_axis_distance, that share no point, span the same heights (over
+// min_height_overlap of the shorter one) and come within max_gap of each other with no observed
+// free space where they come closest, are joined when their union passes the filter under the
+// plane of either; dedup then prefers the union (larger at equal smoothness). Two cans one
+// behind the other have axes a diameter apart; a bowl turned over on a tin (OSD learn41) stands
+// above it; a fruit lying in a bowl is seen across free space.
 #include <optional>
 #include <utility>
 #include <vector>
@@ -28,11 +29,16 @@ namespace symmetry_segmentation {
 std::pair<Eigen::Vector3f, float> closestApproach(const Cloud& cloud, const std::vector<int>& first,
                                                   const std::vector<int>& second);
 
+/// How much of the shorter of `first` and `second` (indices into `cloud`) lies at heights along
+/// `up` (unit) that the other spans too, in [0, 1]; 5 % of each one's points trimmed at either end.
+float heightOverlap(const Cloud& cloud, const std::vector<int>& first, const std::vector<int>& second,
+                    const Eigen::Vector3f& up);
+
 class CoaxialPieceStage : public Stage {
  public:
   CoaxialPieceStage(const CoaxialPieceParams& params, const UprightHypothesisParams& axes,
-                    const SymmetryFilterParams& filter, const DuplicateParams& dedup)
-      : params_(params), axes_(axes), filter_(filter), dedup_(dedup) {}
+                    const SymmetryFilterParams& filter)
+      : params_(params), axes_(axes), filter_(filter) {}
   void run(PipelineState& state) const override;
 
   /// The vertical axis `points` turn about, if they are a surface of revolution: the upright
@@ -44,7 +50,6 @@ class CoaxialPieceStage : public Stage {
   CoaxialPieceParams params_;
   UprightHypothesisParams axes_;
   SymmetryFilterParams filter_;
-  DuplicateParams dedup_;
 };
 
 }  // namespace symmetry_segmentation

@@ -422,6 +422,7 @@ struct CoaxialPieceParams {
   float max_axis_distance = 0.02f;
   float max_gap = 0.04f;
   float min_axis_share = 0.6f;
+  float min_height_overlap = 0.5f;
 };
 
 inline void describeParameters(ParameterList<CoaxialPieceParams>& list) {
@@ -430,7 +431,9 @@ inline void describeParameters(ParameterList<CoaxialPieceParams>& list) {
       .add("max_gap", &CoaxialPieceParams::max_gap, 0.0, 0.5, "m",
            "...when they come closer than this, with no observed free space where they come closest")
       .add("min_axis_share", &CoaxialPieceParams::min_axis_share, 0.0, 1.0, "",
-           "a segment turns about an axis when this share of its side points' normal lines pass it (upright.max_axis_residual)");
+           "a segment turns about an axis when this share of its side points' normal lines pass it (upright.max_axis_residual)")
+      .add("min_height_overlap", &CoaxialPieceParams::min_height_overlap, 0.0, 1.0, "",
+           "...and the two span the same heights over this share of the shorter one's height: one object's walls, not one object on another");
 }
 
 struct SymmetryParams {
