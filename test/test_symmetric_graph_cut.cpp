@@ -198,6 +198,45 @@ TEST(SymmetricGraphCut, DataTermOfOnePoint) {
   EXPECT_FLOAT_EQ(ss::normalCompatibility(60.0f, params), 0.0f);
 }
 
+// The authors' implementation grades a reflection into free space by its distance to the
+// nearest obstacle, unobserved space included: space nobody saw may hold the surface the
+// reflection stands for. With unobserved_steps free space just beside unknown space, far from
+// every scene point, costs no more than a landing beside a surface; far from both it is still
+// background.
+TEST(SymmetricGraphCut, FreeSpaceBesideUnobservedSpaceIsNearASurfaceWhenProbed) {
+  const TwoBoxes scene;
+  const int top = 0;
+  const Eigen::Vector3f p = scene.cloud->points[top].getVector3fMap();
+  // Above the rays to the table's far edge nobody looked (unknown); come down into the free
+  // space they crossed, well behind both boxes.
+  Eigen::Vector3f target(0.0f, 0.5f, 0.4f);
+  ASSERT_EQ(scene.occupancy->classify(target), ss::Occupancy::Unknown);
+  while (scene.occupancy->classify(target) != ss::Occupancy::Free && target.z() > 0.0f) target.z() -= 0.002f;
+  target.z() -= 0.004f;  // inside free space, less than a voxel from the unknown
+  ASSERT_EQ(scene.occupancy->classify(target), ss::Occupancy::Free);
+  float nearest_point = 1.0f;
+  for (const auto& point : scene.cloud->points) nearest_point = std::min(nearest_point, (point.getVector3fMap() - target).norm());
+  ASSERT_GT(nearest_point, 0.03f);  // past dbuf: without the probe a full penalty
+
+  ss::SymmetryCutParams probed;
+  probed.unobserved_steps = 2;
+  const ss::SymmetricGraphCut plain = scene.cut();
+  const ss::SymmetricGraphCut with_probe(scene.cloud, *scene.occupancy, scene.table, probed);
+  const ss::SymmetryPlane onto_target = ss::bisectorPlane(p, target);
+  const ss::ReflectionEvidence before = plain.dataTerm(top, onto_target);
+  const ss::ReflectionEvidence after = with_probe.dataTerm(top, onto_target);
+  EXPECT_EQ(before.landing, ss::ReflectionLanding::Free);
+  EXPECT_FLOAT_EQ(before.cost_foreground, 1.0f);
+  EXPECT_EQ(after.landing, ss::ReflectionLanding::Free);
+  EXPECT_LE(after.cost_foreground, 0.5f);  // within 2 cm of the shadow: at most half way to dbuf
+
+  // Open free space between the sensor and the table is far from everything: still background.
+  const Eigen::Vector3f open_space(0.0f, -0.4f, 0.4f);
+  const ss::ReflectionEvidence open = with_probe.dataTerm(top, ss::bisectorPlane(p, open_space));
+  EXPECT_EQ(open.landing, ss::ReflectionLanding::Free);
+  EXPECT_FLOAT_EQ(open.cost_foreground, 1.0f);
+}
+
 TEST(SymmetricGraphCut, MirrorJustOutsideUnobservedSpaceIsTheHiddenSide) {
   // Observed free space for x < 0.05, nothing observed beyond (the inside of an object whose
   // hidden face is at x = 0.05). A patch at x = -0.1 faces +x; mirrored about x = c it faces -x,

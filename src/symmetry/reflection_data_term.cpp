@@ -37,6 +37,28 @@ float ReflectionDataTerm::heightAboveTable(const Eigen::Vector3f& point) const {
   return table_plane_->head<3>().dot(point) + (*table_plane_)[3];
 }
 
+float ReflectionDataTerm::unobservedWithin(const Eigen::Vector3f& point, float limit) const {
+  static const std::vector<Eigen::Vector3f> directions = [] {
+    std::vector<Eigen::Vector3f> result;
+    for (int x = -1; x <= 1; ++x) {
+      for (int y = -1; y <= 1; ++y) {
+        for (int z = -1; z <= 1; ++z) {
+          if (x != 0 || y != 0 || z != 0) result.push_back(Eigen::Vector3f(x, y, z).normalized());
+        }
+      }
+    }
+    return result;
+  }();
+  for (int step = 1; step <= params_.unobserved_steps; ++step) {
+    const float reach = static_cast<float>(step) * params_.dmax;
+    if (reach >= limit) break;
+    for (const Eigen::Vector3f& direction : directions) {
+      if (occupancy_.classify(point + reach * direction) != Occupancy::Free) return reach;
+    }
+  }
+  return limit;
+}
+
 ReflectionEvidence ReflectionDataTerm::evaluate(int index, const SymmetryPlane& plane) const {
   const PointT& point = cloud_.points[index];
   const Eigen::Vector3f position = point.getVector3fMap();
@@ -122,6 +144,7 @@ ReflectionEvidence ReflectionDataTerm::evaluate(int index, const SymmetryPlane& 
                         [&](int, float squared) { nearest_squared = std::min(nearest_squared, squared); });
     nearest = std::sqrt(nearest_squared);
   }
+  nearest = unobservedWithin(reflected, nearest);
   evidence.landing = ReflectionLanding::Free;
   evidence.distance = nearest;
   evidence.cost_foreground = freeSpaceCost(nearest, params_);

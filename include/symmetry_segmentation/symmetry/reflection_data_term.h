@@ -19,6 +19,10 @@
 //     displaced by noise and the voxel grid) ("occluded"): no evidence either way,
 //     cost(FG) = cost(BG) = 0; smoothness decides.
 //   * else (observed free space): cost(FG) = clamp((r - dmax) / (dbuf - dmax), 0, 1), cost(BG) = 0.
+//     With unobserved_steps > 0, r is the distance to the nearest scene point or unobserved /
+//     occupied cell, whichever is nearer (probed in the 26 grid directions at 1..steps x dmax):
+//     unobserved space may hold the surface the reflection stands for (the authors' obstacle
+//     distance, aecins/symseg).
 
 #include <optional>
 
@@ -70,6 +74,9 @@ class ReflectionDataTerm {
  private:
   /// Signed distance to the table plane (+inf without one).
   float heightAboveTable(const Eigen::Vector3f& point) const;
+  /// The first probe distance (1..unobserved_steps x dmax, below `limit`) at which a grid
+  /// direction from `point` meets space that is not free; `limit` if none does.
+  float unobservedWithin(const Eigen::Vector3f& point, float limit) const;
 
   const Cloud& cloud_;
   const PointGrid& grid_;

@@ -142,6 +142,7 @@ struct SymmetryCutParams {
   float lambda_sym = 2.0f;
   int neighbours = 5;
   float max_neighbour_distance = 0.05f;
+  int unobserved_steps = 0;
 };
 
 inline void describeParameters(ParameterList<SymmetryCutParams>& list) {
@@ -157,6 +158,8 @@ inline void describeParameters(ParameterList<SymmetryCutParams>& list) {
       .add("neighbours", &P::neighbours, 1, 50, "", "k of the k-nearest-neighbour smoothness graph (paper)")
       .add("max_neighbour_distance", &P::max_neighbour_distance, 0.0, 1.0, "m",
            "...but points farther apart are not neighbours: a speck of noise is no part of the surface nearest to it; 0: no limit")
+      .add("unobserved_steps", &P::unobserved_steps, 0, 5, "dmax steps",
+           "a reflection into free space within this many dmax steps of unobserved or occupied space is only that far from a surface (the authors' obstacle distance); 0: scene points only")
       .rule([](const P& p) { return p.dmax < p.dbuf ? "" : "needs dmax < dbuf"; })
       .rule([](const P& p) { return p.alpha_min_deg < p.alpha_max_deg ? "" : "needs alpha_min_deg < alpha_max_deg"; });
 }
