@@ -200,6 +200,8 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
   }
   if (finite.empty()) throw InputError(scene.cloud_path, "cloud has no finite points");
   out.viewpoint = chooseViewpoint(scene);
+  // A camera frame without normals gets them from its pixel grid, the table band's too.
+  const bool organized_normals = !scene.has_normals && params.organized_normal_smoothing > 0.0f && input.isOrganized();
   if (params.max_range > 0.0f) {
     std::vector<int> in_range;
     for (int i : finite) {
@@ -266,7 +268,7 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
       above.reserve(finite.size());
       for (std::size_t k = 0; k < finite.size(); ++k) {
         if (distances[k] <= out.table_margin) {
-          if (distances[k] >= -out.table_margin) out.table_band.push_back(finite[k]);
+          if (organized_normals && distances[k] >= -out.table_margin) out.table_band.push_back(finite[k]);
           ++out.dropped.on_table;
         } else if (distances[k] > max_height) {
           ++out.dropped.too_high;
@@ -298,7 +300,7 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
   // The table band's too, in the same pass, for object_bottoms: the band pixels near a kept
   // pixel (an object's bottom lies under its object in the image; the rest is the table).
   Cloud::Ptr kept_with_normals;
-  if (!scene.has_normals && params.organized_normal_smoothing > 0.0f && input.isOrganized()) {
+  if (organized_normals) {
     out.table_band = pixelsNear(input.width, input.height, finite, out.table_band, kBandPixelReach);
     std::vector<int> kept_and_band = finite;
     kept_and_band.insert(kept_and_band.end(), out.table_band.begin(), out.table_band.end());

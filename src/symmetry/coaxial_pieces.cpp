@@ -53,13 +53,12 @@ std::optional<Eigen::Vector3f> CoaxialPieceStage::revolutionAxis(const Cloud& cl
   const Eigen::Vector3f& axis = axes.front().point;
   std::size_t sides = 0, through = 0;
   for (int i : points) {
-    Eigen::Vector3f normal = cloud[i].getNormalVector3fMap();
-    normal -= normal.dot(up) * up;
-    if (normal.norm() < 0.3f) continue;  // a near-horizontal surface point: no side
+    Eigen::Vector3f normal;
+    if (!horizontalNormal(cloud, i, up, normal)) continue;
     ++sides;
     Eigen::Vector3f offset = axis - cloud[i].getVector3fMap();
     offset -= offset.dot(up) * up;
-    through += std::fabs(up.cross(normal.normalized()).dot(offset)) < axes_.max_axis_residual;
+    through += std::fabs(up.cross(normal).dot(offset)) < axes_.max_axis_residual;
   }
   if (sides == 0 || static_cast<float>(through) < params_.min_axis_share * static_cast<float>(sides)) return std::nullopt;
   return axis;
@@ -72,7 +71,7 @@ float heightOverlap(const Cloud& cloud, const std::vector<int>& first, const std
     std::vector<float> heights;
     heights.reserve(points.size());
     for (int i : points) heights.push_back(up.dot(cloud[i].getVector3fMap()));
-    return std::make_pair(quantileOf(heights, kHeightTrim), quantileOf(heights, 1.0f - kHeightTrim));
+    return trimmedRange(heights, kHeightTrim);
   };
   const auto [first_low, first_high] = span(first);
   const auto [second_low, second_high] = span(second);
@@ -89,15 +88,15 @@ void CoaxialPieceStage::run(PipelineState& state) const {
   }
   const Eigen::Vector3f up = *state.up;
   const Cloud& cloud = *state.cloud;
-  std::vector<std::optional<Eigen::Vector3f>> axis(state.segments.size());
-  for (std::size_t s = 0; s < state.segments.size(); ++s) axis[s] = revolutionAxis(cloud, state.segments[s].points, up);
+  // Axes are fitted only for segments of pairs that pass the cheaper tests, once each.
+  std::vector<std::optional<std::optional<Eigen::Vector3f>>> fitted(state.segments.size());
+  const auto axisOf = [&](std::size_t s) -> const std::optional<Eigen::Vector3f>& {
+    if (!fitted[s]) fitted[s] = revolutionAxis(cloud, state.segments[s].points, up);
+    return *fitted[s];
+  };
   std::vector<CandidateSegment> unions;
   for (std::size_t a = 0; a < state.segments.size(); ++a) {
     for (std::size_t b = a + 1; b < state.segments.size(); ++b) {
-      if (!axis[a] || !axis[b]) continue;
-      Eigen::Vector3f apart = *axis[a] - *axis[b];
-      apart -= apart.dot(up) * up;
-      if (apart.norm() > params_.max_axis_distance) continue;
       const CandidateSegment& first = state.segments[a];
       const CandidateSegment& second = state.segments[b];
       // Pieces seen apart share no point (sharing some, they are two cuts of one region, or two
@@ -105,6 +104,13 @@ void CoaxialPieceStage::run(PipelineState& state) const {
       if (overlapOfSmaller(first.points, second.points) > 0.0f) continue;
       // A bowl's walls span the same heights; a bowl turned over on a tin stands above it.
       if (heightOverlap(cloud, first.points, second.points, up) < params_.min_height_overlap) continue;
+      const std::optional<Eigen::Vector3f>& first_axis = axisOf(a);
+      if (!first_axis) continue;
+      const std::optional<Eigen::Vector3f>& second_axis = axisOf(b);
+      if (!second_axis) continue;
+      Eigen::Vector3f apart = *first_axis - *second_axis;
+      apart -= apart.dot(up) * up;
+      if (apart.norm() > params_.max_axis_distance) continue;
       const auto [middle, gap] = closestApproach(cloud, first.points, second.points);
       if (gap > params_.max_gap || state.occupancy->classify(middle) == Occupancy::Free) continue;
       CandidateSegment joint;

@@ -35,8 +35,7 @@ std::pair<float, float> extentAlong(const Cloud& cloud, const std::vector<int>& 
   std::vector<float> along;
   along.reserve(points.size());
   for (int i : points) along.push_back(axis.dot(cloud[i].getVector3fMap()));
-  const float low = quantileOf(along, kEndTrim);
-  return {low, quantileOf(along, 1.0f - kEndTrim)};
+  return trimmedRange(along, kEndTrim);
 }
 
 /// `plane` turned by `angle_deg` about `up`, halfway between the outer ends of both pieces along its new normal.

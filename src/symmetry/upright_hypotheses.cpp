@@ -81,7 +81,8 @@ bool fitVerticalAxis(const Cloud& cloud, const std::vector<int>& points, const E
   return std::sqrt(squared_residual / used) < params.max_axis_residual && radius < params.max_axis_radius;
 }
 
-/// Horizontal unit normal of point i, or false for a near-horizontal surface point.
+}  // namespace
+
 bool horizontalNormal(const Cloud& cloud, int i, const Eigen::Vector3f& up, Eigen::Vector3f& d) {
   d = cloud.points[i].getNormalVector3fMap();
   d -= d.dot(up) * up;
@@ -89,8 +90,6 @@ bool horizontalNormal(const Cloud& cloud, int i, const Eigen::Vector3f& up, Eige
   d.normalize();
   return true;
 }
-
-}  // namespace
 
 bool coversAnArc(const Cloud& cloud, const std::vector<int>& points, const Eigen::Vector3f& up,
                  const UprightHypothesisParams& params) {

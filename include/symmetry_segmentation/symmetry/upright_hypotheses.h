@@ -24,6 +24,10 @@ struct VerticalAxis {
   float radius = 0.0f;      ///< Mean horizontal distance of the points from it.
 };
 
+/// The horizontal part of point i's normal, unit length, in `d`; false for a near-horizontal
+/// surface point (normal within about 17 degrees of `up`), which shows no side to turn about an axis.
+bool horizontalNormal(const Cloud& cloud, int i, const Eigen::Vector3f& up, Eigen::Vector3f& d);
+
 /// Vertical axes of the surfaces of revolution `points` cover, most points first. Usually one;
 /// where round objects touch, their sides meet with equal normals and merge into one surface,
 /// and each object's axis is found by sampling pairs of normal lines (seeded: the same points
