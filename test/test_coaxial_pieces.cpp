@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <functional>
+#include <optional>
 
 #include "symmetry_segmentation/segmentation_config.h"
 #include "symmetry_segmentation/symmetry/coaxial_pieces.h"
@@ -119,6 +120,37 @@ TEST(CoaxialPieces, ABowlsOuterFrontAndInnerBackWallAreJoined) {
   state.segments = {outer, inner};
   ss::CoaxialPieceStage(tight, config.symmetry.upright, config.symmetry.filter).run(state);
   EXPECT_EQ(state.segments.size(), 2u);
+}
+
+// The pieces' planes are whatever their cuts and refinement left: a few millimetres off the
+// axis, the union's reflections land beside its walls, in free space. The union gets the plane
+// offset search the filter gives every cut (OSD learn33: a bowl's walls joined at occlusion
+// 0.989, 0.998 once moved).
+TEST(CoaxialPieces, TheUnionGetsTheFiltersPlaneOffsetSearch) {
+  ss::Cloud cloud;
+  std::vector<int> labels;
+  const float pi = static_cast<float>(M_PI);
+  addWall(cloud, labels, Eigen::Vector3f::Zero(), 0.06f, 0.004f, 0.07f, -pi, 0.0f, false, 1);
+  addWall(cloud, labels, Eigen::Vector3f::Zero(), 0.055f, 0.02f, 0.07f, 0.0f, pi, true, 1);
+  const ss::Scene scene = sceneOf(cloud, labels);
+  const ss::SegmentationConfig config;
+  ss::PipelineState state = ss::preparePipeline(scene, config.preprocessing, config.symmetry);
+  ASSERT_TRUE(state.up);
+  auto outer = segmentOf(state, scene, 1, [](const Eigen::Vector3f& p) { return horizontalRadius(p) > 0.0575f; });
+  auto inner = segmentOf(state, scene, 1, [](const Eigen::Vector3f& p) { return horizontalRadius(p) <= 0.0575f; });
+  for (ss::CandidateSegment* piece : {&outer, &inner}) piece->plane.distance = -0.01f;  // the plane x = 1 cm
+  const auto unionOf = [&](const ss::SymmetryFilterParams& filter) {
+    state.segments = {outer, inner};
+    ss::CoaxialPieceStage(config.symmetry.coaxial_pieces, config.symmetry.upright, filter).run(state);
+    return state.segments.size() == 3u ? std::optional<ss::CandidateSegment>(state.segments[2]) : std::nullopt;
+  };
+  ss::SymmetryFilterParams no_search = config.symmetry.filter;
+  no_search.plane_offset_search = 0.0f;
+  EXPECT_FALSE(unionOf(no_search)) << "at 1 cm off the axis the union fails";
+  const auto joined = unionOf(config.symmetry.filter);
+  ASSERT_TRUE(joined) << "moved back to the axis it passes";
+  EXPECT_TRUE(ss::passesFilter(*joined, config.symmetry.filter));
+  EXPECT_LT(std::fabs(joined->plane.distance), 0.005f);
 }
 
 TEST(CoaxialPieces, TwoCansOneBehindTheOtherStayTwo) {

@@ -126,7 +126,7 @@ void CoaxialPieceStage::run(PipelineState& state) const {
           joint.scores = scores;
         }
       }
-      if (passesFilter(joint, filter_)) unions.push_back(std::move(joint));
+      if (passesFilterAfterOffsetFit(joint, *state.evidence, filter_)) unions.push_back(std::move(joint));
     }
   }
   joined = unions.size();

@@ -33,7 +33,7 @@ std::vector<CandidateSegment> explainedIslands(const std::vector<std::vector<int
         found = true;
       }
     }
-    if (found && passesFilter(best, filter)) result.push_back(std::move(best));
+    if (found && passesFilterAfterOffsetFit(best, evidence, filter)) result.push_back(std::move(best));
   }
   return result;
 }

@@ -31,6 +31,17 @@ void fitPlaneOffset(CandidateSegment& candidate, const SceneEvidence& evidence, 
   }
 }
 
+bool passesFilterAfterOffsetFit(CandidateSegment& candidate, const SceneEvidence& evidence,
+                                const SymmetryFilterParams& params) {
+  if (passesFilter(candidate, params)) return true;
+  if (!(params.plane_offset_search > 0.0f) || static_cast<int>(candidate.points.size()) < params.min_segment_points ||
+      !(candidate.scores.smoothness < params.s_smooth)) {
+    return false;
+  }
+  fitPlaneOffset(candidate, evidence, params.plane_offset_search);
+  return passesFilter(candidate, params);
+}
+
 void FilterStage::run(PipelineState& state) const {
   std::size_t non_empty = 0;
   state.segments.clear();
@@ -39,12 +50,8 @@ void FilterStage::run(PipelineState& state) const {
     std::vector<char> passed(state.candidates.size(), 0);
     parallelFor(state.candidates.size(), state.threads, [&](std::size_t i) {
       CandidateSegment& candidate = state.candidates[i];
-      if (static_cast<int>(candidate.points.size()) < params_.min_segment_points || passesFilter(candidate, params_) ||
-          !(candidate.scores.smoothness < params_.s_smooth)) {
-        return;
-      }
-      fitPlaneOffset(candidate, *state.evidence, params_.plane_offset_search);
-      passed[i] = passesFilter(candidate, params_);
+      if (passesFilter(candidate, params_)) return;
+      passed[i] = passesFilterAfterOffsetFit(candidate, *state.evidence, params_);
     });
     refitted = static_cast<std::size_t>(std::count(passed.begin(), passed.end(), 1));
   }

@@ -14,7 +14,7 @@ namespace symmetry_segmentation {
 
 /// For each island: the plane among `segments`' planes (of segments lying mostly on the island
 /// and covering a good share of it) under which the island scores best; the island with that
-/// plane when it passes `filter`.
+/// plane when it passes `filter` (after the filter's plane offset search).
 std::vector<CandidateSegment> explainedIslands(const std::vector<std::vector<int>>& islands,
                                                const std::vector<CandidateSegment>& segments,
                                                const SceneEvidence& evidence, const SymmetryFilterParams& filter,

@@ -37,6 +37,12 @@ bool passesFilter(const CandidateSegment& segment, const SymmetryFilterParams& p
 /// scores higher.
 void fitPlaneOffset(CandidateSegment& candidate, const SceneEvidence& evidence, float reach);
 
+/// passesFilter, after fitPlaneOffset (reach plane_offset_search) when only s_occl fails: a
+/// candidate a later stage makes (an island, a union of pieces) gets the chance the filter
+/// gives the cuts' candidates.
+bool passesFilterAfterOffsetFit(CandidateSegment& candidate, const SceneEvidence& evidence,
+                                const SymmetryFilterParams& params);
+
 /// The stage: the segments become the candidates that pass the filter.
 class FilterStage : public Stage {
  public:
