@@ -95,6 +95,12 @@ TEST(SceneIo, UpDirectionIsNormalisedAndBadOnesAreRejected) {
   const auto up = ss::loadScene(dir).up;
   ASSERT_TRUE(up.has_value());
   EXPECT_NEAR(up->z(), 1.0f, 1e-6f);
+  // Components whose squares overflow a float still give a unit vector (a fuzzer's find).
+  writeTextFile(dir + "/scene_info.yaml", "up: [0, -0.8, -5.5e31]\n");
+  const auto huge = ss::loadScene(dir).up;
+  ASSERT_TRUE(huge.has_value());
+  EXPECT_NEAR(huge->norm(), 1.0f, 1e-5f);
+  EXPECT_NEAR(huge->z(), -1.0f, 1e-5f);
   for (const char* bad : {"up: [0, 0, 0]\n", "up: [0, 1]\n", "up: [0, x, 1]\n", "up: [0, .nan, 1]\n", "up: 1\n"}) {
     writeTextFile(dir + "/scene_info.yaml", bad);
     EXPECT_THROW(ss::loadScene(dir), ss::InputError) << bad;

@@ -81,8 +81,12 @@ void loadSceneInfo(const std::string& path, Scene& scene) {
 }  // namespace
 
 Eigen::Vector3f checkedUpDirection(const Eigen::Vector3f& up, const std::string& source) {
-  if (!up.allFinite() || !(up.norm() > 1e-6f)) throw InputError(source, "the up direction must be finite and not zero");
-  return up.normalized();
+  // Normalised in double after scaling by the largest component: in float a component of 1e20
+  // squares to inf and the "unit" vector came out zero.
+  const Eigen::Vector3d direction = up.cast<double>();
+  const double scale = direction.cwiseAbs().maxCoeff();
+  if (!direction.allFinite() || !(scale > 1e-6)) throw InputError(source, "the up direction must be finite and not zero");
+  return (direction / scale).normalized().cast<float>();
 }
 
 Scene loadScene(const std::string& path, const SceneLoadOptions& options) {
