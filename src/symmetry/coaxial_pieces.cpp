@@ -64,20 +64,23 @@ std::optional<Eigen::Vector3f> CoaxialPieceStage::revolutionAxis(const Cloud& cl
   return axis;
 }
 
+std::pair<float, float> heightRange(const Cloud& cloud, const std::vector<int>& points, const Eigen::Vector3f& up) {
+  std::vector<float> heights;
+  heights.reserve(points.size());
+  for (int i : points) heights.push_back(up.dot(cloud[i].getVector3fMap()));
+  return trimmedRange(heights, kHeightTrim);
+}
+
+float rangeOverlap(const std::pair<float, float>& first, const std::pair<float, float>& second) {
+  const float shorter = std::min(first.second - first.first, second.second - second.first);
+  if (!(shorter > 0.0f)) return 0.0f;
+  return std::max(0.0f, std::min(first.second, second.second) - std::max(first.first, second.first)) / shorter;
+}
+
 float heightOverlap(const Cloud& cloud, const std::vector<int>& first, const std::vector<int>& second,
                     const Eigen::Vector3f& up) {
   if (first.empty() || second.empty()) return 0.0f;
-  const auto span = [&](const std::vector<int>& points) {
-    std::vector<float> heights;
-    heights.reserve(points.size());
-    for (int i : points) heights.push_back(up.dot(cloud[i].getVector3fMap()));
-    return trimmedRange(heights, kHeightTrim);
-  };
-  const auto [first_low, first_high] = span(first);
-  const auto [second_low, second_high] = span(second);
-  const float shorter = std::min(first_high - first_low, second_high - second_low);
-  if (!(shorter > 0.0f)) return 0.0f;
-  return std::max(0.0f, std::min(first_high, second_high) - std::max(first_low, second_low)) / shorter;
+  return rangeOverlap(heightRange(cloud, first, up), heightRange(cloud, second, up));
 }
 
 void CoaxialPieceStage::run(PipelineState& state) const {
@@ -88,11 +91,27 @@ void CoaxialPieceStage::run(PipelineState& state) const {
   }
   const Eigen::Vector3f up = *state.up;
   const Cloud& cloud = *state.cloud;
-  // Axes are fitted only for segments of pairs that pass the cheaper tests, once each.
+  // Heights once per segment; axes only for segments of pairs that pass the cheaper tests.
+  std::vector<std::pair<float, float>> heights(state.segments.size(), {0.0f, 0.0f});
+  for (std::size_t s = 0; s < state.segments.size(); ++s) {
+    if (!state.segments[s].points.empty()) heights[s] = heightRange(cloud, state.segments[s].points, up);
+  }
+  // Before dedup many segments are one point set cut under several planes: one fit serves them.
+  std::vector<std::size_t> same_points(state.segments.size());
+  for (std::size_t s = 0; s < state.segments.size(); ++s) {
+    same_points[s] = s;
+    for (std::size_t t = 0; t < s; ++t) {
+      if (same_points[t] == t && state.segments[t].points == state.segments[s].points) {
+        same_points[s] = t;
+        break;
+      }
+    }
+  }
   std::vector<std::optional<std::optional<Eigen::Vector3f>>> fitted(state.segments.size());
   const auto axisOf = [&](std::size_t s) -> const std::optional<Eigen::Vector3f>& {
-    if (!fitted[s]) fitted[s] = revolutionAxis(cloud, state.segments[s].points, up);
-    return *fitted[s];
+    auto& axis = fitted[same_points[s]];
+    if (!axis) axis = revolutionAxis(cloud, state.segments[s].points, up);
+    return *axis;
   };
   std::vector<CandidateSegment> unions;
   for (std::size_t a = 0; a < state.segments.size(); ++a) {
@@ -103,7 +122,7 @@ void CoaxialPieceStage::run(PipelineState& state) const {
       // objects; learn41: a bowl turned over on a tin, and a cut holding both).
       if (overlapOfSmaller(first.points, second.points) > 0.0f) continue;
       // A bowl's walls span the same heights; a bowl turned over on a tin stands above it.
-      if (heightOverlap(cloud, first.points, second.points, up) < params_.min_height_overlap) continue;
+      if (rangeOverlap(heights[a], heights[b]) < params_.min_height_overlap) continue;
       const std::optional<Eigen::Vector3f>& first_axis = axisOf(a);
       if (!first_axis) continue;
       const std::optional<Eigen::Vector3f>& second_axis = axisOf(b);

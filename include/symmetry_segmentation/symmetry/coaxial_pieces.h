@@ -29,8 +29,14 @@ namespace symmetry_segmentation {
 std::pair<Eigen::Vector3f, float> closestApproach(const Cloud& cloud, const std::vector<int>& first,
                                                   const std::vector<int>& second);
 
-/// How much of the shorter of `first` and `second` (indices into `cloud`) lies at heights along
-/// `up` (unit) that the other spans too, in [0, 1]; 5 % of each one's points trimmed at either end.
+/// The heights along `up` (unit) that `points` (indices into `cloud`, not empty) span, 5 % of
+/// them trimmed at either end.
+std::pair<float, float> heightRange(const Cloud& cloud, const std::vector<int>& points, const Eigen::Vector3f& up);
+
+/// How much of the shorter of two height ranges the other spans too, in [0, 1].
+float rangeOverlap(const std::pair<float, float>& first, const std::pair<float, float>& second);
+
+/// rangeOverlap of the height ranges of `first` and `second`; 0 if either is empty.
 float heightOverlap(const Cloud& cloud, const std::vector<int>& first, const std::vector<int>& second,
                     const Eigen::Vector3f& up);
 
