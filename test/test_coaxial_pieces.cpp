@@ -91,35 +91,48 @@ TEST(CoaxialPieces, ClosestApproachIsTheMiddleOfTheNearestPair) {
   EXPECT_TRUE(std::isinf(ss::closestApproach(cloud, first, {}).second));
 }
 
+/// A bowl 12 cm wide and 7 cm high about the z axis, seen from the front (-y) and above: its
+/// outside towards the sensor, its inside at the back; the two walls meet at the rim's ends.
+/// Each wall is one segment, both with the plane x = 0.
+struct BowlWalls {
+  ss::Scene scene;
+  ss::SegmentationConfig config;
+  ss::PipelineState state;
+  ss::CandidateSegment outer, inner;
+
+  BowlWalls() {
+    ss::Cloud cloud;
+    std::vector<int> labels;
+    const float pi = static_cast<float>(M_PI);
+    addWall(cloud, labels, Eigen::Vector3f::Zero(), 0.06f, 0.004f, 0.07f, -pi, 0.0f, false, 1);
+    addWall(cloud, labels, Eigen::Vector3f::Zero(), 0.055f, 0.02f, 0.07f, 0.0f, pi, true, 1);
+    scene = sceneOf(cloud, labels);
+    state = ss::preparePipeline(scene, config.preprocessing, config.symmetry);
+    outer = segmentOf(state, scene, 1, [](const Eigen::Vector3f& p) { return horizontalRadius(p) > 0.0575f; });
+    inner = segmentOf(state, scene, 1, [](const Eigen::Vector3f& p) { return horizontalRadius(p) <= 0.0575f; });
+  }
+  /// The union the stage adds to the two walls, if it adds one.
+  std::optional<ss::CandidateSegment> unionOf(const ss::CoaxialPieceParams& params, const ss::SymmetryFilterParams& filter) {
+    state.segments = {outer, inner};
+    ss::CoaxialPieceStage(params, config.symmetry.upright, filter).run(state);
+    return state.segments.size() == 3u ? std::optional<ss::CandidateSegment>(state.segments[2]) : std::nullopt;
+  }
+};
+
 TEST(CoaxialPieces, ABowlsOuterFrontAndInnerBackWallAreJoined) {
-  // A bowl 12 cm wide and 7 cm high about the z axis, seen from the front (-y) and above: its
-  // outside towards the sensor, its inside at the back. The two walls meet at the rim's ends.
-  ss::Cloud cloud;
-  std::vector<int> labels;
-  const float pi = static_cast<float>(M_PI);
-  addWall(cloud, labels, Eigen::Vector3f::Zero(), 0.06f, 0.004f, 0.07f, -pi, 0.0f, false, 1);
-  addWall(cloud, labels, Eigen::Vector3f::Zero(), 0.055f, 0.02f, 0.07f, 0.0f, pi, true, 1);
-  const ss::Scene scene = sceneOf(cloud, labels);
-  const ss::SegmentationConfig config;
-  ss::PipelineState state = ss::preparePipeline(scene, config.preprocessing, config.symmetry);
-  ASSERT_TRUE(state.up);
-  const auto outer = segmentOf(state, scene, 1, [](const Eigen::Vector3f& p) { return horizontalRadius(p) > 0.0575f; });
-  const auto inner = segmentOf(state, scene, 1, [](const Eigen::Vector3f& p) { return horizontalRadius(p) <= 0.0575f; });
-  ASSERT_GT(outer.points.size(), 40u);
-  ASSERT_GT(inner.points.size(), 40u);
-  state.segments = {outer, inner};
-  const ss::CoaxialPieceStage stage(config.symmetry.coaxial_pieces, config.symmetry.upright, config.symmetry.filter);
-  stage.run(state);
-  ASSERT_EQ(state.segments.size(), 3u) << "the union is added";
-  EXPECT_EQ(state.segments[2].points.size(), outer.points.size() + inner.points.size());
-  EXPECT_TRUE(ss::passesFilter(state.segments[2], config.symmetry.filter));
+  BowlWalls bowl;
+  ASSERT_TRUE(bowl.state.up);
+  ASSERT_GT(bowl.outer.points.size(), 40u);
+  ASSERT_GT(bowl.inner.points.size(), 40u);
+  const auto joined = bowl.unionOf(bowl.config.symmetry.coaxial_pieces, bowl.config.symmetry.filter);
+  ASSERT_TRUE(joined) << "the union is added";
+  EXPECT_EQ(joined->points.size(), bowl.outer.points.size() + bowl.inner.points.size());
+  EXPECT_TRUE(ss::passesFilter(*joined, bowl.config.symmetry.filter));
 
   // Apart by more than max_gap (here: asked for less than the wall's thickness), nothing.
-  ss::CoaxialPieceParams tight = config.symmetry.coaxial_pieces;
+  ss::CoaxialPieceParams tight = bowl.config.symmetry.coaxial_pieces;
   tight.max_gap = 0.002f;
-  state.segments = {outer, inner};
-  ss::CoaxialPieceStage(tight, config.symmetry.upright, config.symmetry.filter).run(state);
-  EXPECT_EQ(state.segments.size(), 2u);
+  EXPECT_FALSE(bowl.unionOf(tight, bowl.config.symmetry.filter));
 }
 
 // The pieces' planes are whatever their cuts and refinement left: a few millimetres off the
@@ -127,29 +140,16 @@ TEST(CoaxialPieces, ABowlsOuterFrontAndInnerBackWallAreJoined) {
 // offset search the filter gives every cut (OSD learn33: a bowl's walls joined at occlusion
 // 0.989, 0.998 once moved).
 TEST(CoaxialPieces, TheUnionGetsTheFiltersPlaneOffsetSearch) {
-  ss::Cloud cloud;
-  std::vector<int> labels;
-  const float pi = static_cast<float>(M_PI);
-  addWall(cloud, labels, Eigen::Vector3f::Zero(), 0.06f, 0.004f, 0.07f, -pi, 0.0f, false, 1);
-  addWall(cloud, labels, Eigen::Vector3f::Zero(), 0.055f, 0.02f, 0.07f, 0.0f, pi, true, 1);
-  const ss::Scene scene = sceneOf(cloud, labels);
-  const ss::SegmentationConfig config;
-  ss::PipelineState state = ss::preparePipeline(scene, config.preprocessing, config.symmetry);
-  ASSERT_TRUE(state.up);
-  auto outer = segmentOf(state, scene, 1, [](const Eigen::Vector3f& p) { return horizontalRadius(p) > 0.0575f; });
-  auto inner = segmentOf(state, scene, 1, [](const Eigen::Vector3f& p) { return horizontalRadius(p) <= 0.0575f; });
-  for (ss::CandidateSegment* piece : {&outer, &inner}) piece->plane.distance = -0.01f;  // the plane x = 1 cm
-  const auto unionOf = [&](const ss::SymmetryFilterParams& filter) {
-    state.segments = {outer, inner};
-    ss::CoaxialPieceStage(config.symmetry.coaxial_pieces, config.symmetry.upright, filter).run(state);
-    return state.segments.size() == 3u ? std::optional<ss::CandidateSegment>(state.segments[2]) : std::nullopt;
-  };
-  ss::SymmetryFilterParams no_search = config.symmetry.filter;
+  BowlWalls bowl;
+  ASSERT_TRUE(bowl.state.up);
+  for (ss::CandidateSegment* piece : {&bowl.outer, &bowl.inner}) piece->plane.distance = -0.01f;  // the plane x = 1 cm
+  const ss::CoaxialPieceParams& params = bowl.config.symmetry.coaxial_pieces;
+  ss::SymmetryFilterParams no_search = bowl.config.symmetry.filter;
   no_search.plane_offset_search = 0.0f;
-  EXPECT_FALSE(unionOf(no_search)) << "at 1 cm off the axis the union fails";
-  const auto joined = unionOf(config.symmetry.filter);
+  EXPECT_FALSE(bowl.unionOf(params, no_search)) << "at 1 cm off the axis the union fails";
+  const auto joined = bowl.unionOf(params, bowl.config.symmetry.filter);
   ASSERT_TRUE(joined) << "moved back to the axis it passes";
-  EXPECT_TRUE(ss::passesFilter(*joined, config.symmetry.filter));
+  EXPECT_TRUE(ss::passesFilter(*joined, bowl.config.symmetry.filter));
   EXPECT_LT(std::fabs(joined->plane.distance), 0.005f);
 }
 
