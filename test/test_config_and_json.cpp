@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include <set>
 #include <yaml-cpp/yaml.h>
 
@@ -127,6 +129,11 @@ TEST(SegmentsJson, RoundTripKeepsEverything) {
   with_plane.indices = {1, 2};
   with_plane.symmetry = ss::SymmetryPlane{Eigen::Vector3f(0, 1, 0), -0.12f};
   with_plane.scores = ss::SegmentScores{0.98f, 0.01f};
+  ss::ObjectBox box;
+  box.center = Eigen::Vector3f(0.1f, 0.2f, 0.75f);
+  box.axes = Eigen::AngleAxisf(0.5f, Eigen::Vector3f::UnitZ()).toRotationMatrix();
+  box.size = Eigen::Vector3f(0.2f, 0.1f, 0.05f);
+  with_plane.box = box;
   result.segments = {plain, with_plane};
   result.timing_ms = {{"preprocess", 12.5}, {"total", 40.0}};
   result.support = ss::SupportSurface{Eigen::Vector4f(0, 0, 1, -0.7f),
@@ -141,6 +148,11 @@ TEST(SegmentsJson, RoundTripKeepsEverything) {
   ASSERT_TRUE(loaded.segments[1].symmetry.has_value());
   EXPECT_FLOAT_EQ(loaded.segments[1].symmetry->distance, -0.12f);
   EXPECT_FLOAT_EQ(loaded.segments[1].scores->occlusion, 0.98f);
+  EXPECT_FALSE(loaded.segments[0].box.has_value());
+  ASSERT_TRUE(loaded.segments[1].box.has_value());
+  EXPECT_TRUE(loaded.segments[1].box->center.isApprox(box.center));
+  EXPECT_TRUE(loaded.segments[1].box->axes.isApprox(box.axes));  // columns written as rows, read back as columns
+  EXPECT_TRUE(loaded.segments[1].box->size.isApprox(box.size));
   ASSERT_EQ(loaded.timing_ms.size(), 2u);
   EXPECT_EQ(loaded.timing_ms[1].first, "total");
   ASSERT_TRUE(loaded.support.has_value());

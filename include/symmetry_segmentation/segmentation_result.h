@@ -20,10 +20,18 @@ struct SegmentScores {
   float smoothness = 0.0f;
 };
 
+/// A box around an object's points (object_box.h says how it is oriented).
+struct ObjectBox {
+  Eigen::Vector3f center = Eigen::Vector3f::Zero();
+  Eigen::Matrix3f axes = Eigen::Matrix3f::Identity();  ///< Columns: the box's unit x, y, z (right-handed).
+  Eigen::Vector3f size = Eigen::Vector3f::Zero();      ///< Full edge lengths along x, y, z (m).
+};
+
 struct Segment {
   std::vector<int> indices;  ///< Sorted indices into the input cloud.
   std::optional<SymmetryPlane> symmetry;
   std::optional<SegmentScores> scores;
+  std::optional<ObjectBox> box;  ///< In the input cloud's frame (addObjectBoxes).
 };
 
 /// The surface the objects stand on: only points over its polygon were segmented.

@@ -1,6 +1,7 @@
 #pragma once
-// segments.json: {"input_points": N, "segments": [{"indices": [...], "symmetry": {...},
-// "scores": {...}}], "timing_ms": {...}}
+// segments.json: {"input_points": N, "support": {...}, "segments": [{"indices": [...],
+// "symmetry": {...}, "scores": {...}, "box": {"center": [...], "axes": [[x], [y], [z]],
+// "size": [...]}}], "timing_ms": {...}, "counts": {...}}
 
 #include <string>
 

@@ -6,6 +6,7 @@
 #include "symmetry_segmentation/baseline_segmenters.h"
 #include "symmetry_segmentation/object_bottoms.h"
 #include "symmetry_segmentation/segment_order.h"
+#include "symmetry_segmentation/object_box.h"
 #include "symmetry_segmentation/stopwatch.h"
 
 namespace symmetry_segmentation {
@@ -35,6 +36,7 @@ SegmentationResult EuclideanSegmenter::segment(const Scene& scene) const {
     restoreObjectBottoms(scene, prepared, preprocessing_.voxel_size, result.segments, bottoms_);
   }
   sortSegmentsBySize(result.segments);
+  addObjectBoxes(scene, result);
   result.timing_ms.emplace_back("clustering", stage.lap());
   result.timing_ms.emplace_back("total", total.elapsedMs());
   return result;

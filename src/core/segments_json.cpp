@@ -37,6 +37,14 @@ std::string toJson(const SegmentationResult& result) {
     if (segment.scores) {
       entry["scores"] = {{"occlusion", segment.scores->occlusion}, {"smoothness", segment.scores->smoothness}};
     }
+    if (segment.box) {
+      const ObjectBox& box = *segment.box;
+      Json axes = Json::array();  // one unit direction per row: x, y, z
+      for (int k = 0; k < 3; ++k) axes.push_back({box.axes(0, k), box.axes(1, k), box.axes(2, k)});
+      entry["box"] = {{"center", {box.center.x(), box.center.y(), box.center.z()}},
+                      {"axes", axes},
+                      {"size", {box.size.x(), box.size.y(), box.size.z()}}};
+    }
     out << (i == 0 ? "\n  " : ",\n  ") << entry.dump();
   }
   Json timing = Json::object();
@@ -132,11 +140,29 @@ SupportSurface supportSurface(const std::string& path, const Json& support) {
   return surface;
 }
 
+ObjectBox objectBox(const std::string& path, const Json& json) {
+  ObjectBox box;
+  const std::vector<float> center = finiteNumbers(path, member(path, json, "center", "'box'"), 3, "box center");
+  const std::vector<float> size = finiteNumbers(path, member(path, json, "size", "'box'"), 3, "box size");
+  const Json& axes = member(path, json, "axes", "'box'");
+  if (!axes.is_array() || axes.size() != 3) malformed(path, "box axes need 3 rows");
+  for (int k = 0; k < 3; ++k) {
+    const std::vector<float> axis = finiteNumbers(path, axes[k], 3, "box axis");
+    box.axes.col(k) = Eigen::Vector3f(axis[0], axis[1], axis[2]);
+    if (std::abs(box.axes.col(k).norm() - 1.0f) > 1e-3f) malformed(path, "box axes must be unit vectors");
+  }
+  box.center = Eigen::Vector3f(center[0], center[1], center[2]);
+  box.size = Eigen::Vector3f(size[0], size[1], size[2]);
+  if ((box.size.array() < 0.0f).any()) malformed(path, "box size must not be negative");
+  return box;
+}
+
 Segment readSegment(const std::string& path, const Json& entry, std::size_t input_points) {
   Segment segment;
   segment.indices = segmentIndices(path, member(path, entry, "indices", "each segment"), input_points);
   if (entry.contains("symmetry")) segment.symmetry = symmetryPlane(path, entry["symmetry"]);
   if (entry.contains("scores")) segment.scores = segmentScores(path, entry["scores"]);
+  if (entry.contains("box")) segment.box = objectBox(path, entry["box"]);
   return segment;
 }
 

@@ -4,53 +4,22 @@
 #include <cmath>
 #include <limits>
 
-#include <Eigen/Eigenvalues>
 #include <pcl/common/io.h>
 #include <pcl_conversions/pcl_conversions.h>
 
+#include "symmetry_segmentation/object_box.h"
 #include "symmetry_segmentation/point_validity.h"
 #include "symmetry_segmentation/segmentation_output.h"
 
 namespace symmetry_segmentation {
-
-OrientedBox orientedBoundingBox(const Cloud& cloud, const std::vector<int>& indices) {
-  OrientedBox box;
-  std::vector<Eigen::Vector3f> points;
-  points.reserve(indices.size());
-  for (int index : indices) {
-    if (index < 0 || static_cast<std::size_t>(index) >= cloud.size() || !isUsablePoint(cloud[index])) continue;
-    points.push_back(cloud[index].getVector3fMap());
-  }
-  if (points.empty()) return box;
-  Eigen::Vector3f mean = Eigen::Vector3f::Zero();
-  for (const auto& p : points) mean += p;
-  mean /= static_cast<float>(points.size());
-  Eigen::Matrix3f covariance = Eigen::Matrix3f::Zero();
-  for (const auto& p : points) covariance += (p - mean) * (p - mean).transpose();
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3f> solver(covariance);
-  Eigen::Matrix3f axes;  // columns: principal axes, largest variance first
-  axes.col(0) = solver.eigenvectors().col(2);
-  axes.col(1) = solver.eigenvectors().col(1);
-  axes.col(2) = axes.col(0).cross(axes.col(1));  // right-handed
-  if (!axes.allFinite() || std::abs(axes.determinant() - 1.0f) > 1e-3f) axes = Eigen::Matrix3f::Identity();
-  Eigen::Vector3f low = Eigen::Vector3f::Constant(std::numeric_limits<float>::max());
-  Eigen::Vector3f high = -low;
-  for (const auto& p : points) {
-    const Eigen::Vector3f local = axes.transpose() * (p - mean);
-    low = low.cwiseMin(local);
-    high = high.cwiseMax(local);
-  }
-  box.center = mean + axes * (0.5f * (low + high));
-  box.orientation = Eigen::Quaternionf(axes).normalized();
-  box.size = high - low;
-  return box;
-}
 
 SegmentedObjectArray objectsMessage(const Cloud& cloud, const SegmentationResult& result,
                                     const std_msgs::Header& header) {
   SegmentedObjectArray message;
   message.header = header;
   message.objects.reserve(result.segments.size());
+  std::optional<Eigen::Vector3f> up;
+  if (result.support && result.support->plane.head<3>().norm() > 0.0f) up = result.support->plane.head<3>().normalized();
   for (std::size_t i = 0; i < result.segments.size(); ++i) {
     const Segment& segment = result.segments[i];
     SegmentedObject object;
@@ -65,14 +34,16 @@ SegmentedObjectArray objectsMessage(const Cloud& cloud, const SegmentationResult
       object.symmetry_plane.coef = {segment.symmetry->normal.x(), segment.symmetry->normal.y(),
                                     segment.symmetry->normal.z(), segment.symmetry->distance};
     }
-    const OrientedBox box = orientedBoundingBox(cloud, segment.indices);
+    // Every method gives its segments their boxes; a result made elsewhere gets them here alike.
+    const ObjectBox box = segment.box ? *segment.box : objectBox(cloud, segment.indices, up);
+    const Eigen::Quaternionf orientation(box.axes);
     object.bounding_box_pose.position.x = box.center.x();
     object.bounding_box_pose.position.y = box.center.y();
     object.bounding_box_pose.position.z = box.center.z();
-    object.bounding_box_pose.orientation.w = box.orientation.w();
-    object.bounding_box_pose.orientation.x = box.orientation.x();
-    object.bounding_box_pose.orientation.y = box.orientation.y();
-    object.bounding_box_pose.orientation.z = box.orientation.z();
+    object.bounding_box_pose.orientation.w = orientation.w();
+    object.bounding_box_pose.orientation.x = orientation.x();
+    object.bounding_box_pose.orientation.y = orientation.y();
+    object.bounding_box_pose.orientation.z = orientation.z();
     object.bounding_box_size.x = box.size.x();
     object.bounding_box_size.y = box.size.y();
     object.bounding_box_size.z = box.size.z();

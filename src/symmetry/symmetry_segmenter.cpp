@@ -3,6 +3,7 @@
 
 #include <map>
 
+#include "symmetry_segmentation/object_box.h"
 #include "symmetry_segmentation/stopwatch.h"
 #include "symmetry_segmentation/symmetry/pipeline_state.h"
 
@@ -27,6 +28,7 @@ SegmentationResult SymmetrySegmenter::segment(const Scene& scene) const {
   result.input_points = scene.size();
   result.support = supportSurface(state.prepared);
   result.segments = reportedSegments(state);
+  addObjectBoxes(scene, result);
   result.timing_ms = std::move(state.timing_ms);
   result.timing_ms.emplace_back("total", total.elapsedMs());
   result.counts = std::move(state.counts);

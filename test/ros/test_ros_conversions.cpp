@@ -393,20 +393,37 @@ TEST(SceneAssembly, TransformsIntoProcessingFrameAndUsesOrigin) {
   EXPECT_FLOAT_EQ(with_up.up->y(), -1.0f);
 }
 
-TEST(ResultConversion, OrientedBoxFindsCentreSizeAndAxes) {
-  const ss::Cloud cloud = boxCloud();
+TEST(ResultConversion, ObjectBoxesStandOnTheSupportOrComeWithTheSegment) {
+  const ss::Cloud cloud = boxCloud();  // 20 x 10 x 5 cm around (1, 2, 3)
   std::vector<int> all(cloud.size());
   for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
-  const ss::OrientedBox box = ss::orientedBoundingBox(cloud, all);
-  EXPECT_NEAR(box.center.x(), 1.0f, 1e-4f);
-  EXPECT_NEAR(box.center.y(), 2.0f, 1e-4f);
-  EXPECT_NEAR(box.center.z(), 3.0f, 1e-4f);
-  EXPECT_NEAR(box.size.x(), 0.2f, 1e-4f);   // largest extent first
-  EXPECT_NEAR(box.size.y(), 0.1f, 1e-4f);
-  EXPECT_NEAR(box.size.z(), 0.05f, 1e-4f);
-  const Eigen::Vector3f first_axis = box.orientation * Eigen::Vector3f::UnitX();
-  EXPECT_NEAR(std::abs(first_axis.x()), 1.0f, 1e-4f);
-  EXPECT_NEAR(box.orientation.toRotationMatrix().determinant(), 1.0f, 1e-4f);
+  ss::SegmentationResult result;
+  ss::Segment segment;
+  segment.indices = all;
+  result.segments = {segment};
+  result.support = ss::SupportSurface{Eigen::Vector4f(1, 0, 0, 0), {}};  // up along x
+  std_msgs::Header header;
+  const auto message = ss::objectsMessage(cloud, result, header);
+  ASSERT_EQ(message.objects.size(), 1u);
+  const auto& pose = message.objects[0].bounding_box_pose;
+  const Eigen::Quaternionf orientation(pose.orientation.w, pose.orientation.x, pose.orientation.y, pose.orientation.z);
+  EXPECT_NEAR(std::abs((orientation * Eigen::Vector3f::UnitZ()).x()), 1.0f, 1e-4f);  // z: the support's up
+  EXPECT_NEAR(std::abs((orientation * Eigen::Vector3f::UnitX()).y()), 1.0f, 1e-4f);  // x: the longer footprint side
+  EXPECT_NEAR(message.objects[0].bounding_box_size.x, 0.1f, 1e-4f);
+  EXPECT_NEAR(message.objects[0].bounding_box_size.y, 0.05f, 1e-4f);
+  EXPECT_NEAR(message.objects[0].bounding_box_size.z, 0.2f, 1e-4f);
+  EXPECT_NEAR(pose.position.x, 1.0f, 1e-4f);
+  EXPECT_NEAR(pose.position.y, 2.0f, 1e-4f);
+  EXPECT_NEAR(pose.position.z, 3.0f, 1e-4f);
+
+  ss::ObjectBox given;  // a method's box is handed over as it is
+  given.center = Eigen::Vector3f(5, 6, 7);
+  given.size = Eigen::Vector3f(0.3f, 0.2f, 0.1f);
+  result.segments[0].box = given;
+  const auto with_box = ss::objectsMessage(cloud, result, header);
+  EXPECT_FLOAT_EQ(with_box.objects[0].bounding_box_pose.position.y, 6.0f);
+  EXPECT_FLOAT_EQ(with_box.objects[0].bounding_box_size.x, 0.3f);
+  EXPECT_FLOAT_EQ(with_box.objects[0].bounding_box_pose.orientation.w, 1.0f);
 }
 
 TEST(ResultConversion, ObjectsCarryIdsIndicesPlanesAndScores) {

@@ -16,16 +16,8 @@
 
 namespace symmetry_segmentation {
 
-struct OrientedBox {
-  Eigen::Vector3f center = Eigen::Vector3f::Zero();
-  Eigen::Quaternionf orientation = Eigen::Quaternionf::Identity();  ///< Box axes (right-handed).
-  Eigen::Vector3f size = Eigen::Vector3f::Zero();                   ///< Full edge lengths along the axes.
-};
-
-/// Box around the finite points `indices` selects, along their principal axes (largest first).
-OrientedBox orientedBoundingBox(const Cloud& cloud, const std::vector<int>& indices);
-
-/// One object per segment (ids 1..N in segment order); clouds and boxes in `cloud`'s frame.
+/// One object per segment (ids 1..N in segment order); clouds and boxes (the segment's, else
+/// objectBox up the support's normal) in `cloud`'s frame.
 SegmentedObjectArray objectsMessage(const Cloud& cloud, const SegmentationResult& result,
                                     const std_msgs::Header& header);
 

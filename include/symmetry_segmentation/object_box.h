@@ -1,0 +1,30 @@
+#pragma once
+// The box a grasp planner gets for each object: the smallest box around its points that stands
+// on the support (one axis along gravity), because grippers approach objects on a table from
+// above or from the side, and a box tilted along the visible points' variance misleads both.
+
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "symmetry_segmentation/scene.h"
+#include "symmetry_segmentation/segmentation_result.h"
+
+namespace symmetry_segmentation {
+
+/// The box around the usable points `indices` selects from `cloud`, in the cloud's frame.
+/// With `up` (unit, the support's normal or gravity's opposite): z = up, x and y the sides of the
+/// smallest-area rectangle around the footprint (the points projected along up), x the longer;
+/// size = (length along x, along y, height). Without: the points' principal axes, ordered by the
+/// box's extent along them (x the longest). Right-handed; x's sign is arbitrary. An empty box
+/// (zero size, identity axes) when no point is usable.
+ObjectBox objectBox(const Cloud& cloud, const std::vector<int>& indices, const std::optional<Eigen::Vector3f>& up);
+
+/// The up direction boxes use for `result` of `scene`: the support's normal, else the scene's up.
+std::optional<Eigen::Vector3f> boxUp(const Scene& scene, const SegmentationResult& result);
+
+/// Gives every segment of `result` its box (objectBox with boxUp); every method ends with it.
+void addObjectBoxes(const Scene& scene, SegmentationResult& result);
+
+}  // namespace symmetry_segmentation
