@@ -1,6 +1,10 @@
 // segment_scene end to end: valid output on good scenes, one clear line and a non-zero exit
 // on every kind of bad input.
 #include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <nlohmann/json.hpp>
 #include <unistd.h>
 
 #include <algorithm>
@@ -89,6 +93,32 @@ TEST(SegmentSceneCli, SegmentsAHandBuiltScene) {
   const auto result = ss::readSegmentsJson(dir + "/out/segments.json");
   ASSERT_EQ(result.segments.size(), 1u);  // the box, without the table
   EXPECT_GT(result.segments[0].indices.size(), 1000u);
+}
+
+// The symmetry method completes each object: segments.json says how, segments_completed.ply
+// holds each segment's points and the added ones.
+TEST(SegmentSceneCli, SymmetryMethodWritesCompletedObjects) {
+  const std::string dir = test_support::makeTempDir("cli_completion");
+  ss::saveScene(boxScene(), dir + "/scene");
+  const auto result = segment(dir + "/scene", dir + "/out", "--method symmetry --no-png");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const auto json = nlohmann::json::parse(test_support::readTextFile(dir + "/out/segments.json"));
+  ASSERT_FALSE(json["segments"].empty());
+  std::size_t points = 0;
+  for (const auto& segment : json["segments"]) {
+    ASSERT_TRUE(segment.contains("completion")) << segment.dump().substr(0, 200);
+    const auto& completion = segment["completion"];
+    points += segment["indices"].size() + completion["points"].get<std::size_t>();
+    const auto& q = completion["frame"]["orientation"];
+    ASSERT_EQ(q.size(), 4u);
+    const double norm = std::sqrt(q[0].get<double>() * q[0].get<double>() + q[1].get<double>() * q[1].get<double>() +
+                                  q[2].get<double>() * q[2].get<double>() + q[3].get<double>() * q[3].get<double>());
+    EXPECT_NEAR(norm, 1.0, 1e-5);
+    for (int k = 0; k < 3; ++k) EXPECT_GE(completion["box"]["size"][k].get<double>(), segment["box"]["size"][k].get<double>() - 1e-6);
+  }
+  const std::string ply = test_support::readTextFile(dir + "/out/segments_completed.ply");
+  EXPECT_NE(ply.find("element vertex " + std::to_string(points) + "\n"), std::string::npos);
+  EXPECT_NE(result.output.find("segments_completed.ply"), std::string::npos);
 }
 
 // Gravity given on the command line is used when the table is estimated: the right up finds

@@ -19,6 +19,10 @@ Eigen::Vector3i segmentColor(std::size_t index);
 /// Every input point, coloured by the first segment holding it; others keep a dimmed grey.
 pcl::PointCloud<pcl::PointXYZRGB> colorBySegment(const Cloud& cloud, const std::vector<Segment>& segments);
 
+/// Each segment's points in its colour and its completion's added points (its unseen side) in
+/// a lighter shade of it; nothing else.
+pcl::PointCloud<pcl::PointXYZRGB> completedObjects(const Cloud& cloud, const std::vector<Segment>& segments);
+
 void writeColoredPly(const pcl::PointCloud<pcl::PointXYZRGB>& cloud, const std::string& path);
 
 struct View {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 namespace symmetry_segmentation {
 
@@ -27,11 +28,20 @@ struct ObjectBox {
   Eigen::Vector3f size = Eigen::Vector3f::Zero();      ///< Full edge lengths along x, y, z (m).
 };
 
+/// An object completed by its symmetry (stage completion).
+struct SegmentCompletion {
+  std::vector<Eigen::Vector3f> points;  ///< Its unseen side: reflections into unobserved space.
+  ObjectBox box;                        ///< Around the visible and the added points.
+  Eigen::Vector3f frame_position = Eigen::Vector3f::Zero();  ///< Symmetry frame: origin on the plane,
+  Eigen::Quaternionf frame_orientation = Eigen::Quaternionf::Identity();  ///< x its normal, z up.
+};
+
 struct Segment {
   std::vector<int> indices;  ///< Sorted indices into the input cloud.
   std::optional<SymmetryPlane> symmetry;
   std::optional<SegmentScores> scores;
   std::optional<ObjectBox> box;  ///< In the input cloud's frame (addObjectBoxes).
+  std::optional<SegmentCompletion> completion;  ///< In the input cloud's frame.
 };
 
 /// The surface the objects stand on: only points over its polygon were segmented.

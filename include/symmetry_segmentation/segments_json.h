@@ -1,7 +1,9 @@
 #pragma once
 // segments.json: {"input_points": N, "support": {...}, "segments": [{"indices": [...],
 // "symmetry": {...}, "scores": {...}, "box": {"center": [...], "axes": [[x], [y], [z]],
-// "size": [...]}}], "timing_ms": {...}, "counts": {...}}
+// "size": [...]}, "completion": {"points": n, "box": {...}, "frame": {"position": [...],
+// "orientation": [x, y, z, w]}}}], "timing_ms": {...}, "counts": {...}}. Reading skips
+// "completion" (its points are in segments_completed.ply).
 
 #include <string>
 

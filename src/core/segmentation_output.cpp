@@ -58,6 +58,33 @@ pcl::PointCloud<pcl::PointXYZRGB> colorBySegment(const Cloud& cloud, const std::
   return colored;
 }
 
+pcl::PointCloud<pcl::PointXYZRGB> completedObjects(const Cloud& cloud, const std::vector<Segment>& segments) {
+  pcl::PointCloud<pcl::PointXYZRGB> colored;
+  for (std::size_t s = 0; s < segments.size(); ++s) {
+    const Eigen::Vector3i color = segmentColor(s);
+    const Eigen::Vector3i shade = (color + Eigen::Vector3i::Constant(255)) / 2;  // halfway to white
+    auto add = [&](const Eigen::Vector3f& p, const Eigen::Vector3i& c) {
+      pcl::PointXYZRGB q;
+      q.x = p.x();
+      q.y = p.y();
+      q.z = p.z();
+      q.r = static_cast<std::uint8_t>(c.x());
+      q.g = static_cast<std::uint8_t>(c.y());
+      q.b = static_cast<std::uint8_t>(c.z());
+      colored.push_back(q);
+    };
+    for (int index : segments[s].indices) {
+      if (index >= 0 && static_cast<std::size_t>(index) < cloud.size()) add(cloud.points[index].getVector3fMap(), color);
+    }
+    if (segments[s].completion) {
+      for (const Eigen::Vector3f& p : segments[s].completion->points) add(p, shade);
+    }
+  }
+  colored.width = static_cast<std::uint32_t>(colored.size());
+  colored.height = 1;
+  return colored;
+}
+
 void writeColoredPly(const pcl::PointCloud<pcl::PointXYZRGB>& cloud, const std::string& path) {
   if (pcl::io::savePLYFileBinary(path, cloud) != 0) throw InputError(path, "cannot write PLY");
 }

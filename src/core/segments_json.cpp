@@ -13,6 +13,18 @@
 namespace symmetry_segmentation {
 using Json = nlohmann::ordered_json;
 
+namespace {
+
+Json boxJson(const ObjectBox& box) {
+  Json axes = Json::array();  // one unit direction per row: x, y, z
+  for (int k = 0; k < 3; ++k) axes.push_back({box.axes(0, k), box.axes(1, k), box.axes(2, k)});
+  return {{"center", {box.center.x(), box.center.y(), box.center.z()}},
+          {"axes", axes},
+          {"size", {box.size.x(), box.size.y(), box.size.z()}}};
+}
+
+}  // namespace
+
 std::string toJson(const SegmentationResult& result) {
   // Hand-laid top level so a person can read it: one segment per line, indices inline.
   std::ostringstream out;
@@ -37,13 +49,14 @@ std::string toJson(const SegmentationResult& result) {
     if (segment.scores) {
       entry["scores"] = {{"occlusion", segment.scores->occlusion}, {"smoothness", segment.scores->smoothness}};
     }
-    if (segment.box) {
-      const ObjectBox& box = *segment.box;
-      Json axes = Json::array();  // one unit direction per row: x, y, z
-      for (int k = 0; k < 3; ++k) axes.push_back({box.axes(0, k), box.axes(1, k), box.axes(2, k)});
-      entry["box"] = {{"center", {box.center.x(), box.center.y(), box.center.z()}},
-                      {"axes", axes},
-                      {"size", {box.size.x(), box.size.y(), box.size.z()}}};
+    if (segment.box) entry["box"] = boxJson(*segment.box);
+    if (segment.completion) {
+      const SegmentCompletion& completion = *segment.completion;
+      const Eigen::Vector3f& p = completion.frame_position;
+      const Eigen::Quaternionf& q = completion.frame_orientation;
+      entry["completion"] = {{"points", completion.points.size()},
+                             {"box", boxJson(completion.box)},
+                             {"frame", {{"position", {p.x(), p.y(), p.z()}}, {"orientation", {q.x(), q.y(), q.z(), q.w()}}}}};
     }
     out << (i == 0 ? "\n  " : ",\n  ") << entry.dump();
   }

@@ -4,6 +4,7 @@
 #include "symmetry_segmentation/occupancy.h"
 #include "symmetry_segmentation/segment_order.h"
 #include "symmetry_segmentation/stopwatch.h"
+#include "symmetry_segmentation/symmetry/completion.h"
 #include "symmetry_segmentation/symmetry/graph_evidence.h"
 #include "symmetry_segmentation/symmetry/sorted_indices.h"
 #include "symmetry_segmentation/symmetry/symmetric_graph_cut.h"
@@ -51,6 +52,32 @@ PipelineState preparePipeline(const Scene& scene, const PreprocessParams& prepro
   return state;
 }
 
+namespace {
+
+/// The completed object: the added points, the box around them and the visible input points, and
+/// the symmetry frame at the centroid of the working points and the added ones (both 1 cm apart).
+SegmentCompletion completedObject(const PipelineState& state, const CandidateSegment& candidate,
+                                  const std::vector<int>& input_points) {
+  SegmentCompletion completion;
+  completion.points = *candidate.completion;
+  std::vector<Eigen::Vector3f> visible;
+  visible.reserve(input_points.size());
+  for (int index : input_points) visible.push_back(state.scene->cloud->points[index].getVector3fMap());
+  const std::optional<Eigen::Vector3f> up = state.up ? state.up : state.scene->up;
+  completion.box = completedBox(visible, completion.points, up);
+  Eigen::Vector3f centroid = Eigen::Vector3f::Zero();
+  for (int index : candidate.points) centroid += state.cloud->points[index].getVector3fMap();
+  for (const Eigen::Vector3f& p : completion.points) centroid += p;
+  const std::size_t count = candidate.points.size() + completion.points.size();
+  if (count > 0) centroid /= static_cast<float>(count);
+  const Eigen::Isometry3f frame = symmetryFrame(centroid, candidate.plane, up);
+  completion.frame_position = frame.translation();
+  completion.frame_orientation = Eigen::Quaternionf(frame.linear()).normalized();
+  return completion;
+}
+
+}  // namespace
+
 std::vector<Segment> reportedSegments(const PipelineState& state) {
   std::vector<Segment> segments;
   segments.reserve(state.segments.size());
@@ -59,6 +86,7 @@ std::vector<Segment> reportedSegments(const PipelineState& state) {
     segment.indices = setUnion(expandToInput(state.prepared, candidate.points), candidate.extra_input_points);
     segment.symmetry = candidate.plane;
     segment.scores = candidate.scores;
+    if (candidate.completion) segment.completion = completedObject(state, candidate, segment.indices);
     segments.push_back(std::move(segment));
   }
   sortSegmentsBySize(segments);

@@ -10,6 +10,7 @@
 #include "symmetry_segmentation/segmentation_config.h"
 #include "symmetry_segmentation/symmetry/coaxial_pieces.h"
 #include "symmetry_segmentation/symmetry/color_seams.h"
+#include "symmetry_segmentation/symmetry/completion.h"
 #include "symmetry_segmentation/symmetry/composite_segments.h"
 #include "symmetry_segmentation/symmetry/duplicate_segments.h"
 #include "symmetry_segmentation/symmetry/footprint_hypotheses.h"
@@ -101,6 +102,9 @@ const std::vector<StageInfo>& stageCatalog() {
       {"object_bottoms", K::SegmentRewriter, "each segment gets back its sides' points within the table margin",
        {P::Segments}, {},
        [](const Config& c) { return made<ObjectBottomStage>(c.object_bottoms, c.preprocessing.voxel_size); }},
+      {"completion", K::SegmentRewriter, "each segment's unseen side: its reflections into unobserved space (the completed box and symmetry frame)",
+       {P::Segments}, {},
+       [](const Config&) { return made<CompletionStage>(); }},
   };
   return catalog;
 }

@@ -186,6 +186,7 @@ GeneratedScene generate(const GeneratorOptions& options) {
   scene.name = scene.kind + "_seed" + std::to_string(options.seed);
   if (options.single_view) {
     fillSingleView(views.front(), result.cameras.front(), options.intrinsics, scene);
+    result.world_to_scene = result.cameras.front().camera_to_world.inverse();
     return result;
   }
 

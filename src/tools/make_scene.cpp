@@ -15,6 +15,7 @@
 
 #include "symmetry_segmentation/errors.h"
 #include "symmetry_segmentation/scene_io.h"
+#include "symmetry_segmentation/synthetic/object_shapes.h"
 #include "symmetry_segmentation/synthetic/scene_generator.h"
 
 namespace {
@@ -30,7 +31,9 @@ const char* const kUsage =
     "                  [--image-scale K] [--realistic] [--single-view SENSOR]\n"
     "       make_scene --list-kinds | --help\n"
     "Writes a synthetic tabletop scene (cloud.ply, occupancy.bt, table_plane.txt, labels.txt,\n"
-    "scene_info.yaml) seen by a virtual depth camera from N poses (default 4) on a 60 degree arc.\n"
+    "scene_info.yaml) seen by a virtual depth camera from N poses (default 4) on a 60 degree arc,\n"
+    "and each object's whole shape as ground truth for completion (objects.yaml: its box;\n"
+    "objects_surface.ply: samples of every side but its base, 1 cm apart, with its label).\n"
     "The same kind and seed always give identical files.\n"
     "  --fusion-voxel M   voxel size (m) the views are fused with, 0.0005..0.05 (default 0.003);\n"
     "                     smaller gives more points\n"
@@ -177,6 +180,7 @@ int main(int argc, char** argv) {
     const auto start = std::chrono::steady_clock::now();
     const synthetic::GeneratedScene generated = synthetic::generate(options);
     symmetry_segmentation::saveScene(generated.scene, args.output);
+    synthetic::saveObjectShapes(generated.layout.world, generated.world_to_scene, args.output);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cout << "make_scene: " << generated.scene.name << ": " << generated.scene.size() << " points, "
               << generated.layout.world.objects.size() << " objects, " << options.num_views << " views, "

@@ -1,5 +1,6 @@
 // segment_scene: segments one scene with one method and writes segments.json, a coloured PLY
 // and a PNG picture. Exit codes: 0 success, 1 bad input or failure, 2 bad command line.
+#include <algorithm>
 #include <cstring>
 #include <iostream>
 #include <optional>
@@ -163,6 +164,10 @@ int main(int argc, char** argv) {
     ss::writeSegmentsJson(result, json_path);
     const auto colored = ss::colorBySegment(*scene.cloud, result.segments);
     ss::writeColoredPly(colored, ply_path);
+    const bool completed = std::any_of(result.segments.begin(), result.segments.end(),
+                                       [](const ss::Segment& segment) { return segment.completion.has_value(); });
+    const std::string completed_path = options.output + "/segments_completed.ply";
+    if (completed) ss::writeColoredPly(ss::completedObjects(*scene.cloud, result.segments), completed_path);
     if (options.png) {
       ss::renderPng(colored, ss::defaultView(scene, result.segments), png_path, ss::segmentedPoints(result.segments));
     }
@@ -176,7 +181,8 @@ int main(int argc, char** argv) {
       std::cout << "\n";
     }
     std::cout
-              << "wrote " << json_path << ", " << ply_path << (options.png ? ", " + png_path : "") << "\n";
+              << "wrote " << json_path << ", " << ply_path << (completed ? ", " + completed_path : "")
+              << (options.png ? ", " + png_path : "") << "\n";
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "segment_scene: error: " << e.what() << "\n";

@@ -10,6 +10,7 @@
 // the rim's reflections then land just beyond the far rim, in free space (OSD learn14: a 9 cm
 // box, plane 9 mm off, occlusion 0.915). The offset that explains most reflections stays.
 
+#include <optional>
 #include <vector>
 
 #include "symmetry_segmentation/segmentation_result.h"
@@ -27,6 +28,8 @@ struct CandidateSegment {
   SymmetryPlane plane;
   SegmentScores scores;
   std::vector<int> extra_input_points;  ///< Input points beyond its voxels' (object bottoms), sorted.
+  /// Points of its unseen side, its reflections into unobserved space (stage completion).
+  std::optional<std::vector<Eigen::Vector3f>> completion;
 };
 
 /// Occlusion score above s_occl, smoothness score below s_smooth, at least min_segment_points.

@@ -445,7 +445,7 @@ struct SymmetryParams {
   std::vector<std::string> stages = {"curves",          "curve_pairs",  "upright",     "cut",        "refine",
                                      "islands",         "footprints",   "cut",         "occluder_gaps", "refine",
                                      "filter",          "island_segments", "mirror_twins", "composites", "color_seams",
-                                     "coaxial_pieces",  "object_size",  "dedup",       "object_bottoms"};
+                                     "coaxial_pieces",  "object_size",  "dedup",       "object_bottoms", "completion"};
   NormalEdgeCurveParams curves;
   CurvePairParams curve_pairs;
   UprightHypothesisParams upright;

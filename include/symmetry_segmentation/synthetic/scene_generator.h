@@ -43,6 +43,8 @@ struct GeneratedScene {
   Scene scene;
   SceneLayout layout;
   std::vector<CameraPose> cameras;
+  /// The layout's world frame to the scene cloud's (a single view is in its camera's frame).
+  Eigen::Isometry3d world_to_scene = Eigen::Isometry3d::Identity();
 };
 
 /// Throws InputError naming the first bad option.

@@ -1,0 +1,89 @@
+// Stage completion: the unseen side from the symmetry plane, the completed box, the symmetry frame.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "fake_evidence.h"
+#include "symmetry_segmentation/symmetry/completion.h"
+#include "symmetry_segmentation/symmetry/symmetry_plane.h"
+
+namespace ss = symmetry_segmentation;
+
+namespace {
+
+ss::PointT at(float x, float y, float z) {
+  ss::PointT p;
+  p.x = x;
+  p.y = y;
+  p.z = z;
+  return p;
+}
+
+}  // namespace
+
+TEST(Completion, OnlyReflectionsIntoUnobservedSpaceAboveTheTableAreAdded) {
+  // Plane x = 0. Point 0 mirrors onto point 1 (seen: nothing to add), point 2 into free space,
+  // point 3 into unobserved space, point 4 into unobserved space under the table (z < 0).
+  ss::Cloud cloud;
+  cloud.push_back(at(-0.05f, 0.0f, 0.05f));
+  cloud.push_back(at(0.05f, 0.0f, 0.05f));
+  cloud.push_back(at(-0.05f, 0.02f, 0.05f));
+  cloud.push_back(at(-0.05f, 0.04f, 0.05f));
+  // The reflection of a point 1 mm above the table about a plane tilted a little goes under it.
+  cloud.push_back(at(-0.05f, 0.06f, 0.001f));
+  test_support::FakeEvidence evidence(cloud);
+  evidence.lands_on = [](int index, const ss::SymmetryPlane&) { return index == 0 ? 1 : -1; };
+  evidence.free_landing = [](const Eigen::Vector3f& p) { return std::abs(p.y() - 0.02f) < 1e-4f; };
+  ss::SymmetryPlane plane;
+  plane.normal = Eigen::Vector3f(1.0f, 0.0f, -0.1f).normalized();
+  plane.distance = 0.0f;
+  const ss::PlaneCoefficients table(0, 0, 1, 0);
+  const auto added = ss::hiddenSideReflections(evidence, {0, 1, 2, 3, 4}, plane, table);
+  // Point 1 mirrors onto nothing known either (the fake answers per index) and lands at x < 0
+  // above the table: added, like point 3.
+  ASSERT_EQ(added.size(), 2u);
+  EXPECT_TRUE(added[1].isApprox(ss::reflectPoint(plane, cloud[3].getVector3fMap())));
+  const auto without_table = ss::hiddenSideReflections(evidence, {0, 1, 2, 3, 4}, plane, std::nullopt);
+  EXPECT_EQ(without_table.size(), 3u);  // with no table, nothing is under it
+}
+
+TEST(Completion, TheCompletedBoxTrimsStrayReflectionsButKeepsTheHiddenSide) {
+  // Visible: the front face y = 0 of a 10 x 6 x 8 cm box, x in [0, 0.1], z in [0, 0.08].
+  std::vector<Eigen::Vector3f> visible, added;
+  for (float x = 0.0f; x <= 0.1001f; x += 0.005f) {
+    for (float z = 0.0f; z <= 0.0801f; z += 0.005f) {
+      visible.emplace_back(x, 0.0f, z);
+      added.emplace_back(x, 0.06f, z);  // its back face, added through the plane y = 0.03
+    }
+  }
+  for (float x = 0.0f; x <= 0.1001f; x += 0.02f) visible.emplace_back(x, 0.03f, 0.08f);  // a ridge on top
+  added.emplace_back(0.05f, 0.12f, 0.04f);  // one stray reflection far behind
+  const ss::ObjectBox box = ss::completedBox(visible, added, Eigen::Vector3f::UnitZ());
+  EXPECT_NEAR(box.size.x(), 0.1f, 1e-3f);
+  EXPECT_NEAR(box.size.y(), 0.06f, 1e-3f) << "the hidden side stays, the stray point goes";
+  EXPECT_NEAR(box.size.z(), 0.08f, 1e-3f);
+  EXPECT_TRUE(box.center.isApprox(Eigen::Vector3f(0.05f, 0.03f, 0.04f), 1e-3f)) << box.center.transpose();
+  const ss::ObjectBox untrimmed = ss::completedBox(visible, added, Eigen::Vector3f::UnitZ(), 0.0f);
+  EXPECT_NEAR(untrimmed.size.y(), 0.12f, 1e-3f);
+}
+
+TEST(Completion, TheSymmetryFrameSitsOnThePlaneWithZUp) {
+  ss::SymmetryPlane plane;
+  plane.normal = Eigen::Vector3f(1.0f, 0.0f, 0.2f).normalized();  // a plane leaning a little
+  plane.distance = -0.3f;
+  const Eigen::Vector3f centroid(0.5f, 0.2f, 0.1f);
+  const Eigen::Isometry3f frame = ss::symmetryFrame(centroid, plane, Eigen::Vector3f::UnitZ());
+  const Eigen::Vector3f origin = frame.translation();
+  EXPECT_NEAR(plane.normal.dot(origin) + plane.distance, 0.0f, 1e-5f);
+  EXPECT_TRUE((origin - centroid).normalized().cross(plane.normal).norm() < 1e-4f);  // projected along the normal
+  const Eigen::Matrix3f axes = frame.linear();
+  EXPECT_TRUE(axes.col(0).isApprox(plane.normal, 1e-5f));
+  EXPECT_NEAR(axes.col(2).dot(axes.col(0)), 0.0f, 1e-5f);
+  EXPECT_GT(axes.col(2).z(), 0.97f);  // up, re-orthogonalised
+  EXPECT_NEAR(axes.determinant(), 1.0f, 1e-5f);
+  // A horizontal plane leaves no up to follow: still a right-handed frame with x its normal.
+  plane.normal = Eigen::Vector3f::UnitZ();
+  const Eigen::Matrix3f flat = ss::symmetryFrame(centroid, plane, Eigen::Vector3f::UnitZ()).linear();
+  EXPECT_TRUE(flat.col(0).isApprox(Eigen::Vector3f::UnitZ()));
+  EXPECT_NEAR(flat.determinant(), 1.0f, 1e-5f);
+}
