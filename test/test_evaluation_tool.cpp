@@ -316,3 +316,37 @@ TEST(PlotPrecisionRecallScript, WritesPngFromCsv) {
   EXPECT_EQ(none.exit_code, 2) << none.output;
   EXPECT_NE(none.output.find("no rows"), std::string::npos) << none.output;
 }
+
+// evaluate_completion on a scene make_scene wrote (with its objects' whole shapes), and on
+// scenes without them.
+TEST(EvaluateCompletion, ReportsScenesWithWholeShapesAndRejectsOthers) {
+  const std::string dir = makeTempDir("evaluate_completion");
+  const auto made = runCommand(toolPath("make_scene") + " --kind isolated --seed 4 --output " + dir + "/isolated_4");
+  ASSERT_EQ(made.exit_code, 0) << made.output;
+  ASSERT_TRUE(fs::exists(dir + "/isolated_4/objects.yaml"));
+  ASSERT_TRUE(fs::exists(dir + "/isolated_4/objects_surface.ply"));
+  const auto result = runCommand(toolPath("evaluate_completion") + " " + dir);
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  std::istringstream lines(result.output);
+  std::string line;
+  bool overall = false;
+  while (std::getline(lines, line)) {
+    if (line.rfind("overall", 0) != 0) continue;
+    overall = true;
+    std::string name, bar;
+    int scenes = 0, objects = 0;
+    double iou_visible = 0, iou_completed = 0;
+    std::istringstream row(line);
+    row >> name >> scenes >> objects >> bar >> iou_visible >> iou_completed;
+    EXPECT_EQ(scenes, 1);
+    EXPECT_GE(objects, 3);  // 3-5 objects well apart, most found
+    EXPECT_GT(iou_visible, 0.5);
+    EXPECT_GT(iou_completed, 0.5);
+  }
+  EXPECT_TRUE(overall) << result.output;
+
+  writeScene(dir + "/labelled_only", twoBoxesOnTable(), "");
+  const auto none = runCommand(toolPath("evaluate_completion") + " " + dir + "/labelled_only");
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_NE(none.output.find("no scene with objects.yaml"), std::string::npos) << none.output;
+}
