@@ -166,7 +166,7 @@ TEST(EvaluateSegmentationTool, AblateRunsTheSymmetryMethodWithoutEachStage) {
     ++rows;
     if (row.find("(required)") != std::string::npos) ++required;
   }
-  EXPECT_EQ(rows, 2u * 17u) << "a row per stage of the default list, per data set";
+  EXPECT_EQ(rows, 2u * 18u) << "a row per stage of the default list, per data set";
   EXPECT_EQ(required, 2u * 4u) << "curves, cut, islands, filter";
 
   const auto lccp = runCommand(tool() + " " + dir + "/scenes --ablate --method lccp");

@@ -19,6 +19,7 @@ constexpr double kPlaneThickness = 0.002;  // m
 constexpr double kArrowLength = 0.1;       // m
 constexpr float kObjectListHeight = 0.2f;  // m above the highest point
 constexpr double kSupportLineWidth = 0.005;  // m
+constexpr double kCompletionPointSize = 0.006;  // m: the added points lie a working voxel (1 cm) apart
 
 geometry_msgs::Point toPoint(const Eigen::Vector3f& v) {
   geometry_msgs::Point p;
@@ -46,6 +47,31 @@ visualization_msgs::Marker baseMarker(const std_msgs::Header& header, const std:
   marker.type = type;
   marker.action = visualization_msgs::Marker::ADD;
   marker.pose.orientation.w = 1.0;
+  return marker;
+}
+
+/// The segment's colour halfway to white: what completion added, as segments_completed.ply has it.
+std_msgs::ColorRGBA lighterColorOf(std::size_t segment, float alpha) {
+  std_msgs::ColorRGBA color = colorOf(segment, alpha);
+  color.r = 0.5f * (color.r + 1.0f);
+  color.g = 0.5f * (color.g + 1.0f);
+  color.b = 0.5f * (color.b + 1.0f);
+  return color;
+}
+
+visualization_msgs::Marker boxMarker(const std_msgs::Header& header, const std::string& ns, int id,
+                                     const ObjectBox& box, const std_msgs::ColorRGBA& color) {
+  auto marker = baseMarker(header, ns, id, visualization_msgs::Marker::CUBE);
+  marker.pose.position = toPoint(box.center);
+  const Eigen::Quaternionf orientation(box.axes);
+  marker.pose.orientation.w = orientation.w();
+  marker.pose.orientation.x = orientation.x();
+  marker.pose.orientation.y = orientation.y();
+  marker.pose.orientation.z = orientation.z();
+  marker.scale.x = std::max(1e-3f, box.size.x());
+  marker.scale.y = std::max(1e-3f, box.size.y());
+  marker.scale.z = std::max(1e-3f, box.size.z());
+  marker.color = color;
   return marker;
 }
 
@@ -117,6 +143,18 @@ visualization_msgs::MarkerArray symmetryMarkers(const Cloud& cloud, const Segmen
       arrow.scale.z = 0.02;   // head length
       arrow.color = colorOf(s, 1.0f);
       markers.markers.push_back(arrow);
+    }
+
+    if (segment.completion) {
+      // The unseen side in a lighter shade, and the box around the completed object.
+      auto added = baseMarker(header, "completions", id, visualization_msgs::Marker::POINTS);
+      for (const Eigen::Vector3f& p : segment.completion->points) added.points.push_back(toPoint(p));
+      added.scale.x = added.scale.y = kCompletionPointSize;
+      added.color = lighterColorOf(s, 1.0f);
+      if (!added.points.empty()) markers.markers.push_back(added);
+      markers.markers.push_back(boxMarker(header, "boxes", id, segment.completion->box, lighterColorOf(s, 0.25f)));
+    } else if (segment.box) {
+      markers.markers.push_back(boxMarker(header, "boxes", id, *segment.box, colorOf(s, 0.25f)));
     }
 
     auto text = baseMarker(header, "ids", id, visualization_msgs::Marker::TEXT_VIEW_FACING);

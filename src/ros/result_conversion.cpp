@@ -13,6 +13,30 @@
 
 namespace symmetry_segmentation {
 
+namespace {
+
+geometry_msgs::Pose poseOf(const Eigen::Vector3f& position, const Eigen::Quaternionf& orientation) {
+  geometry_msgs::Pose pose;
+  pose.position.x = position.x();
+  pose.position.y = position.y();
+  pose.position.z = position.z();
+  pose.orientation.w = orientation.w();
+  pose.orientation.x = orientation.x();
+  pose.orientation.y = orientation.y();
+  pose.orientation.z = orientation.z();
+  return pose;
+}
+
+geometry_msgs::Vector3 vectorOf(const Eigen::Vector3f& v) {
+  geometry_msgs::Vector3 vector;
+  vector.x = v.x();
+  vector.y = v.y();
+  vector.z = v.z();
+  return vector;
+}
+
+}  // namespace
+
 SegmentedObjectArray objectsMessage(const Cloud& cloud, const SegmentationResult& result,
                                     const std_msgs::Header& header) {
   SegmentedObjectArray message;
@@ -36,17 +60,26 @@ SegmentedObjectArray objectsMessage(const Cloud& cloud, const SegmentationResult
     }
     // Every method gives its segments their boxes; a result made elsewhere gets them here alike.
     const ObjectBox box = segment.box ? *segment.box : objectBox(cloud, segment.indices, up);
-    const Eigen::Quaternionf orientation(box.axes);
-    object.bounding_box_pose.position.x = box.center.x();
-    object.bounding_box_pose.position.y = box.center.y();
-    object.bounding_box_pose.position.z = box.center.z();
-    object.bounding_box_pose.orientation.w = orientation.w();
-    object.bounding_box_pose.orientation.x = orientation.x();
-    object.bounding_box_pose.orientation.y = orientation.y();
-    object.bounding_box_pose.orientation.z = orientation.z();
-    object.bounding_box_size.x = box.size.x();
-    object.bounding_box_size.y = box.size.y();
-    object.bounding_box_size.z = box.size.z();
+    object.bounding_box_pose = poseOf(box.center, Eigen::Quaternionf(box.axes));
+    object.bounding_box_size = vectorOf(box.size);
+    if (segment.completion) {
+      const SegmentCompletion& completion = *segment.completion;
+      object.has_completion = true;
+      object.completion_points = static_cast<uint32_t>(completion.points.size());
+      pcl::PointCloud<pcl::PointXYZ> completed;
+      completed.reserve(segment.indices.size() + completion.points.size());
+      for (int index : segment.indices) {
+        if (index >= 0 && static_cast<std::size_t>(index) < cloud.size()) {
+          completed.push_back(pcl::PointXYZ(cloud[index].x, cloud[index].y, cloud[index].z));
+        }
+      }
+      for (const Eigen::Vector3f& p : completion.points) completed.push_back(pcl::PointXYZ(p.x(), p.y(), p.z()));
+      pcl::toROSMsg(completed, object.completed_cloud);
+      object.completed_cloud.header = header;
+      object.completed_box_pose = poseOf(completion.box.center, Eigen::Quaternionf(completion.box.axes));
+      object.completed_box_size = vectorOf(completion.box.size);
+      object.symmetry_frame = poseOf(completion.frame_position, completion.frame_orientation);
+    }
     if (segment.scores) {
       object.has_scores = true;
       object.occlusion_score = segment.scores->occlusion;
@@ -55,6 +88,33 @@ SegmentedObjectArray objectsMessage(const Cloud& cloud, const SegmentationResult
     message.objects.push_back(std::move(object));
   }
   return message;
+}
+
+std::vector<geometry_msgs::TransformStamped> objectFrames(const SegmentedObjectArray& objects) {
+  std::vector<geometry_msgs::TransformStamped> frames;
+  for (const SegmentedObject& object : objects.objects) {
+    if (object.indices.empty()) continue;
+    const geometry_msgs::Pose& pose = object.has_completion ? object.symmetry_frame : object.bounding_box_pose;
+    geometry_msgs::TransformStamped frame;
+    frame.header = objects.header;
+    frame.child_frame_id = "object_" + std::to_string(object.id);
+    frame.transform.translation.x = pose.position.x;
+    frame.transform.translation.y = pose.position.y;
+    frame.transform.translation.z = pose.position.z;
+    frame.transform.rotation = pose.orientation;
+    frames.push_back(frame);
+  }
+  return frames;
+}
+
+void removeClouds(SegmentedObjectArray& objects) {
+  for (SegmentedObject& object : objects.objects) {
+    const std_msgs::Header header = object.cloud.header;
+    object.cloud = sensor_msgs::PointCloud2();
+    object.cloud.header = header;
+    object.completed_cloud = sensor_msgs::PointCloud2();
+    object.completed_cloud.header = header;
+  }
 }
 
 namespace {

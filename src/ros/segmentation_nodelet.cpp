@@ -46,6 +46,7 @@ const std::set<std::string>& interfaceParameterNames() {
                                               "service_threads",
                                               "max_input_points",
                                               "max_rate",
+                                              "publish_object_frames",
                                               "diagnostic_period",
                                               "lazy",
                                               "verbose_connection",
@@ -136,6 +137,7 @@ void SegmentationNodelet::loadInterfaceParameters() {
   readParameter(pnh, "max_input_points", max_input_points_, "integer");
   readParameter(pnh, "service_threads", service_threads_, "integer");
   readParameter(pnh, "max_rate", max_rate_, "number");
+  readParameter(pnh, "publish_object_frames", publish_object_frames_, "bool");
   if (!(transform_timeout_ >= 0.0)) {
     NODELET_ERROR("~transform_timeout %g is not a duration; using 0.1", transform_timeout_);
     transform_timeout_ = 0.1;
@@ -269,6 +271,7 @@ void SegmentationNodelet::onInit() {
 
   tf_buffer_ = std::make_unique<tf2_ros::Buffer>();
   tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_, getNodeHandle());
+  if (publish_object_frames_) tf_broadcaster_ = std::make_unique<tf2_ros::TransformBroadcaster>();
   moved_maps_ = std::make_unique<MovedMapCache>(
       [this](const octomap::OcTree& source, const Eigen::Isometry3d& source_to_frame, const Eigen::AlignedBox3d& region) {
         Stopwatch watch;
@@ -539,6 +542,7 @@ SegmentationNodelet::Outcome SegmentationNodelet::process(const sensor_msgs::Poi
     header.frame_id = frame;
     outcome.objects = objectsMessage(*scene.cloud, result, header);
     objects_publisher_.publish(outcome.objects);
+    if (tf_broadcaster_) tf_broadcaster_->sendTransform(objectFrames(outcome.objects));
     if (labelled_publisher_.getNumSubscribers() > 0) {
       labelled_publisher_.publish(labelledCloudMessage(*scene.cloud, result, header));
     }
@@ -660,6 +664,7 @@ bool SegmentationNodelet::segmentService(SegmentCloud::Request& request, Segment
   response.status = outcome.status;
   response.message = outcome.message;
   response.objects = std::move(outcome.objects);
+  if (request.without_clouds) removeClouds(response.objects);
   for (const auto& [stage, ms] : outcome.timings) {
     response.timing_stages.push_back(stage);
     response.timing_ms.push_back(ms);

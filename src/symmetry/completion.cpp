@@ -1,4 +1,4 @@
-// Stage completion: each segment's unseen side from its symmetry (see the header for why).
+// Stage 20, completion: each segment's unseen side from its symmetry (see the header for why).
 #include "symmetry_segmentation/symmetry/completion.h"
 
 #include <cmath>

@@ -426,6 +426,92 @@ TEST(ResultConversion, ObjectBoxesStandOnTheSupportOrComeWithTheSegment) {
   EXPECT_FLOAT_EQ(with_box.objects[0].bounding_box_pose.orientation.w, 1.0f);
 }
 
+// The object completed by its symmetry goes out whole: its added points with its own, the
+// completed box, the symmetry frame, and a tf frame per object; a printable reply has no clouds.
+TEST(ResultConversion, CompletionIsHandedOverWithFramesAndCloudsCanBeLeftOut) {
+  const ss::Cloud cloud = boxCloud();
+  ss::SegmentationResult result;
+  ss::Segment completed;
+  completed.indices = {0, 1, 2};
+  completed.box = ss::ObjectBox{};
+  ss::SegmentCompletion completion;
+  completion.points = {Eigen::Vector3f(1.1f, 2.0f, 3.0f), Eigen::Vector3f(1.2f, 2.0f, 3.0f)};
+  completion.box.center = Eigen::Vector3f(1.0f, 2.0f, 3.0f);
+  completion.box.size = Eigen::Vector3f(0.3f, 0.2f, 0.1f);
+  completion.frame_position = Eigen::Vector3f(0.5f, 0.6f, 0.7f);
+  completion.frame_orientation = Eigen::Quaternionf(Eigen::AngleAxisf(0.3f, Eigen::Vector3f::UnitZ()));
+  completed.completion = completion;
+  ss::Segment plain;
+  plain.indices = {5, 6};
+  plain.box = ss::ObjectBox{};
+  plain.box->center = Eigen::Vector3f(9, 8, 7);
+  ss::Segment empty;  // no points: no tf frame
+  result.segments = {completed, plain, empty};
+  std_msgs::Header header;
+  header.frame_id = "map";
+  header.stamp = ros::Time(7, 0);
+  auto message = ss::objectsMessage(cloud, result, header);
+  ASSERT_EQ(message.objects.size(), 3u);
+  const auto& first = message.objects[0];
+  ASSERT_TRUE(first.has_completion);
+  EXPECT_EQ(first.completion_points, 2u);
+  EXPECT_EQ(first.completed_cloud.width * first.completed_cloud.height, 5u);  // 3 seen + 2 added
+  EXPECT_EQ(first.completed_cloud.header.frame_id, "map");
+  EXPECT_FLOAT_EQ(first.completed_box_size.x, 0.3f);
+  EXPECT_FLOAT_EQ(first.completed_box_pose.position.z, 3.0f);
+  EXPECT_FLOAT_EQ(first.symmetry_frame.position.y, 0.6f);
+  EXPECT_NEAR(first.symmetry_frame.orientation.z, std::sin(0.15), 1e-6);
+  EXPECT_FALSE(message.objects[1].has_completion);
+
+  const auto frames = ss::objectFrames(message);
+  ASSERT_EQ(frames.size(), 2u);
+  EXPECT_EQ(frames[0].child_frame_id, "object_1");
+  EXPECT_EQ(frames[0].header.frame_id, "map");
+  EXPECT_EQ(frames[0].header.stamp, ros::Time(7, 0));
+  EXPECT_FLOAT_EQ(frames[0].transform.translation.x, 0.5f);  // the symmetry frame
+  EXPECT_EQ(frames[1].child_frame_id, "object_2");
+  EXPECT_FLOAT_EQ(frames[1].transform.translation.x, 9.0f);  // no completion: the box
+
+  ss::removeClouds(message);
+  EXPECT_TRUE(message.objects[0].cloud.data.empty());
+  EXPECT_TRUE(message.objects[0].completed_cloud.data.empty());
+  EXPECT_EQ(message.objects[0].cloud.header.frame_id, "map");
+  EXPECT_EQ(message.objects[0].indices.size(), 3u);
+  EXPECT_FLOAT_EQ(message.objects[0].completed_box_size.x, 0.3f);
+}
+
+TEST(MarkerConversion, CompletedObjectsShowTheirAddedPointsAndBox) {
+  const ss::Cloud cloud = boxCloud();
+  ss::SegmentationResult result;
+  ss::Segment segment;
+  segment.indices = {0, 1, 2};
+  ss::SegmentCompletion completion;
+  completion.points = {Eigen::Vector3f(1.1f, 2.0f, 3.0f), Eigen::Vector3f(1.2f, 2.0f, 3.0f)};
+  completion.box.size = Eigen::Vector3f(0.3f, 0.2f, 0.1f);
+  segment.completion = completion;
+  result.segments = {segment};
+  std_msgs::Header header;
+  header.frame_id = "map";
+  const auto markers = ss::symmetryMarkers(cloud, result, header);
+  auto find = [&](const std::string& ns) {
+    return std::find_if(markers.markers.begin(), markers.markers.end(),
+                        [&](const visualization_msgs::Marker& m) { return m.ns == ns; });
+  };
+  const auto added = find("completions");
+  ASSERT_NE(added, markers.markers.end());
+  EXPECT_EQ(added->type, visualization_msgs::Marker::POINTS);
+  EXPECT_EQ(added->id, 1);
+  ASSERT_EQ(added->points.size(), 2u);
+  EXPECT_NEAR(added->points[1].x, 1.2, 1e-6);
+  const Eigen::Vector3f segment_color = ss::segmentColor(0).cast<float>() / 255.0f;
+  EXPECT_NEAR(added->color.r, 0.5f * (segment_color.x() + 1.0f), 1e-6);  // lighter than the object
+  const auto box = find("boxes");
+  ASSERT_NE(box, markers.markers.end());
+  EXPECT_EQ(box->type, visualization_msgs::Marker::CUBE);
+  EXPECT_NEAR(box->scale.x, 0.3, 1e-6);
+  EXPECT_LT(box->color.a, 1.0f);
+}
+
 TEST(ResultConversion, ObjectsCarryIdsIndicesPlanesAndScores) {
   const ss::Cloud cloud = boxCloud();
   ss::SegmentationResult result;
@@ -683,7 +769,7 @@ TEST(Parameters, AListParameterIsAYamlList) {
   ASSERT_GT(stages.size(), 2u);
   const std::vector<std::string> fewer(stages.begin(), stages.end() - 1);
   for (std::size_t i = 0; i < fewer.size(); ++i) parameters["symmetry"]["stages"][static_cast<int>(i)] = fewer[i];
-  ASSERT_EQ(stages.back(), "object_bottoms");  // a stage the list can run without
+  ASSERT_EQ(stages.back(), "completion");  // a stage the list can run without
   const auto loaded = ss::algorithmParameters(parameters, {});
   EXPECT_TRUE(loaded.problems.empty()) << loaded.problems.front();
   EXPECT_EQ(loaded.config.symmetry.stages, fewer);

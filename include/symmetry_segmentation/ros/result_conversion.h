@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <Eigen/Geometry>
+#include <geometry_msgs/TransformStamped.h>
 #include <sensor_msgs/Image.h>
 #include <sensor_msgs/PointCloud2.h>
 #include <std_msgs/Header.h>
@@ -16,10 +17,17 @@
 
 namespace symmetry_segmentation {
 
-/// One object per segment (ids 1..N in segment order); clouds and boxes (the segment's, else
-/// objectBox up the support's normal) in `cloud`'s frame.
+/// One object per segment (ids 1..N in segment order); clouds, boxes (the segment's, else
+/// objectBox up the support's normal) and completions in `cloud`'s frame.
 SegmentedObjectArray objectsMessage(const Cloud& cloud, const SegmentationResult& result,
                                     const std_msgs::Header& header);
+
+/// A tf frame "object_<id>" per object with points, child of the objects' frame at their stamp:
+/// its symmetry frame when it has a completion, else its bounding box's pose.
+std::vector<geometry_msgs::TransformStamped> objectFrames(const SegmentedObjectArray& objects);
+
+/// Empties every object's cloud and completed cloud (headers stay): a reply small enough to print.
+void removeClouds(SegmentedObjectArray& objects);
 
 /// Every finite input point with x y z rgb label: label k (1-based) and segment k's colour for
 /// points of segment k (the first segment holding a point wins), label 0 and grey for the rest.

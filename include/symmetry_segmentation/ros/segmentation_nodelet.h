@@ -20,6 +20,7 @@
 #include <ros/ros.h>
 #include <sensor_msgs/PointCloud2.h>
 #include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 
 #include "symmetry_segmentation/LiveInterfaceConfig.h"
@@ -120,6 +121,7 @@ class SegmentationNodelet : public nodelet_topic_tools::NodeletLazy {
   std::string up_frame_;  ///< Empty: gravity unknown.
   double transform_timeout_ = 0.1;
   int max_input_points_ = 3000000;
+  bool publish_object_frames_ = false;  ///< tf frame object_<id> per object with points.
   double max_rate_ = 0.0;  ///< Continuous mode: segmentations start at most this often (Hz); 0: no limit.
   int service_threads_ = 2;
   std::optional<GivenPlane> plane_parameter_;
@@ -135,6 +137,7 @@ class SegmentationNodelet : public nodelet_topic_tools::NodeletLazy {
 
   std::unique_ptr<tf2_ros::Buffer> tf_buffer_;
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
+  std::unique_ptr<tf2_ros::TransformBroadcaster> tf_broadcaster_;  ///< With ~publish_object_frames only.
   // ~input: guarded by NodeletLazy's connection_mutex_.
   ros::Subscriber cloud_subscriber_;
   std::atomic<int> latest_waiters_{0};  // ~segment calls waiting for a cloud on ~input

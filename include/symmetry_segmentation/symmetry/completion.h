@@ -1,5 +1,5 @@
 #pragma once
-// Stage completion (beyond the paper): each object completed by its own symmetry. A grasp
+// Stage 20, completion (beyond the paper): each object completed by its own symmetry. A grasp
 // planner that gets only the visible half of a bottle plans against half a bottle; the plane we
 // found says where the other half is. The reflection of a visible point that lands in space no
 // view observed (unknown or occluded, not free, no observed point there, not under the table)
