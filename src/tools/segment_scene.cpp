@@ -168,8 +168,30 @@ int main(int argc, char** argv) {
                                        [](const ss::Segment& segment) { return segment.completion.has_value(); });
     const std::string completed_path = options.output + "/segments_completed.ply";
     if (completed) ss::writeColoredPly(ss::completedObjects(*scene.cloud, result.segments), completed_path);
+    const std::string completed_png_path = options.output + "/segments_completed.png";
     if (options.png) {
       ss::renderPng(colored, ss::defaultView(scene, result.segments), png_path, ss::segmentedPoints(result.segments));
+      if (completed) {
+        // Each object's added points in a lighter shade of its colour.
+        pcl::PointCloud<pcl::PointXYZRGB> with_added = colored;
+        const auto objects = ss::completedObjects(*scene.cloud, result.segments);
+        std::size_t next = 0;
+        for (const auto& segment : result.segments) {
+          next += segment.indices.size();
+          const std::size_t added = segment.completion ? segment.completion->points.size() : 0;
+          for (std::size_t k = 0; k < added; ++k) with_added.push_back(objects.points[next + k]);
+          next += added;
+        }
+        // Seen from the far side, where the added points are: the sensor's view turned half
+        // a turn about the table's up (else the picture's) through its target.
+        ss::View far_side = ss::defaultView(scene, result.segments);
+        const Eigen::Vector3f up =
+            result.support ? Eigen::Vector3f(result.support->plane.head<3>().normalized()) : far_side.up.normalized();
+        const Eigen::Vector3f offset = far_side.eye - far_side.target;
+        const Eigen::Vector3f along_up = offset.dot(up) * up;
+        far_side.eye = far_side.target + along_up - (offset - along_up);
+        ss::renderPng(with_added, far_side, completed_png_path, ss::segmentedPoints(result.segments));
+      }
     }
 
     std::cout << "scene " << scene.name << ": " << scene.size() << " points, method " << segmenter->name() << ", "
@@ -182,7 +204,8 @@ int main(int argc, char** argv) {
     }
     std::cout
               << "wrote " << json_path << ", " << ply_path << (completed ? ", " + completed_path : "")
-              << (options.png ? ", " + png_path : "") << "\n";
+              << (options.png ? ", " + png_path : "") << (options.png && completed ? ", " + completed_png_path : "")
+              << "\n";
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "segment_scene: error: " << e.what() << "\n";
