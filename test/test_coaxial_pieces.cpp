@@ -198,8 +198,11 @@ TEST(CoaxialPieces, ACanStandingCentredOnABoxIsNotJoinedToIt) {
   const auto all = [](const Eigen::Vector3f&) { return true; };
   const ss::CoaxialPieceStage stage(config.symmetry.coaxial_pieces, config.symmetry.upright, config.symmetry.filter);
   state.segments = {segmentOf(state, scene, 1, all), segmentOf(state, scene, 2, all)};
-  EXPECT_FALSE(stage.revolutionAxis(*state.cloud, state.segments[0].points, *state.up)) << "the box";
-  const auto can_axis = stage.revolutionAxis(*state.cloud, state.segments[1].points, *state.up);
+  const float share = config.symmetry.coaxial_pieces.min_axis_share;
+  EXPECT_FALSE(ss::revolutionAxis(*state.cloud, state.segments[0].points, *state.up, config.symmetry.upright, share))
+      << "the box";
+  const auto can_axis =
+      ss::revolutionAxis(*state.cloud, state.segments[1].points, *state.up, config.symmetry.upright, share);
   ASSERT_TRUE(can_axis) << "the can";
   EXPECT_LT(Eigen::Vector2f(can_axis->x(), can_axis->y()).norm(), 0.005f);
   stage.run(state);

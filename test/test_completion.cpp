@@ -87,3 +87,69 @@ TEST(Completion, TheSymmetryFrameSitsOnThePlaneWithZUp) {
   EXPECT_TRUE(flat.col(0).isApprox(Eigen::Vector3f::UnitZ()));
   EXPECT_NEAR(flat.determinant(), 1.0f, 1e-5f);
 }
+
+TEST(Completion, ACanSeenFromTheFrontIsTurnedIntoItsBack) {
+  // The front half of a can of radius 4 cm about the vertical axis through (0.3, 0, 0), normals
+  // pointing out; with a box's two faces beside it for contrast.
+  ss::Cloud cloud;
+  const Eigen::Vector3f axis(0.3f, 0.0f, 0.0f);
+  std::vector<int> can, box;
+  for (float z = 0.01f; z < 0.1f; z += 0.01f) {
+    for (float angle = static_cast<float>(M_PI); angle < 2.0f * static_cast<float>(M_PI) - 0.01f; angle += 0.15f) {
+      ss::PointT p = at(axis.x() + 0.04f * std::cos(angle), axis.y() + 0.04f * std::sin(angle), z);
+      p.normal_x = std::cos(angle);
+      p.normal_y = std::sin(angle);
+      p.normal_z = 0.0f;
+      can.push_back(static_cast<int>(cloud.size()));
+      cloud.push_back(p);
+    }
+    for (float s = -0.05f; s <= 0.05f; s += 0.01f) {  // a box corner: faces x = -0.05 and y = -0.05
+      ss::PointT front = at(s, -0.05f, z);
+      front.normal_y = -1.0f;
+      ss::PointT side = at(-0.05f, s, z);
+      side.normal_x = -1.0f;
+      box.push_back(static_cast<int>(cloud.size()));
+      cloud.push_back(front);
+      box.push_back(static_cast<int>(cloud.size()));
+      cloud.push_back(side);
+    }
+  }
+  const Eigen::Vector3f up = Eigen::Vector3f::UnitZ();
+  const ss::UprightHypothesisParams axes;
+  const std::vector<int> surface = ss::revolutionSurface(cloud, can, axis, up, axes);
+  EXPECT_EQ(surface.size(), can.size());
+  EXPECT_TRUE(ss::revolutionSurface(cloud, box, Eigen::Vector3f::Zero(), up, axes).empty())
+      << "a box's faces are not round about its centre line";
+
+  std::vector<Eigen::Vector3f> seen;
+  for (int i : surface) seen.push_back(cloud[i].getVector3fMap());
+  // Hidden: the back half (y > 0). Every copy stays 4 cm from the axis at its height.
+  const auto back = ss::revolvedHiddenPoints(seen, axis, up, 12, [&](const Eigen::Vector3f& q) { return q.y() > 0.005f; });
+  ASSERT_FALSE(back.empty());
+  for (const auto& q : back) {
+    EXPECT_GT(q.y(), 0.005f);
+    EXPECT_NEAR(Eigen::Vector2f(q.x() - axis.x(), q.y() - axis.y()).norm(), 0.04f, 1e-4f);
+  }
+  const auto thinned = ss::onePerCell(back, 0.01f);
+  EXPECT_LT(thinned.size(), back.size());
+  EXPECT_GT(thinned.size(), back.size() / 20);
+}
+
+TEST(Completion, APlaneFarBesideAFlatObjectCompletesNothing) {
+  // A book, 26 x 17 cm, lying flat: every plane across it is a symmetry, one 25 cm beside it too.
+  ss::Cloud cloud;
+  std::vector<int> book;
+  for (float x = 0.0f; x <= 0.26f; x += 0.01f) {
+    for (float y = 0.0f; y <= 0.17f; y += 0.01f) {
+      book.push_back(static_cast<int>(cloud.size()));
+      cloud.push_back(at(x, y, 0.03f));
+    }
+  }
+  ss::SymmetryPlane through;
+  through.normal = Eigen::Vector3f::UnitX();
+  through.distance = -0.13f;  // x = 0.13, across its middle
+  EXPECT_TRUE(ss::planeNearPoints(cloud, book, through, Eigen::Vector3f::UnitZ()));
+  ss::SymmetryPlane beside = through;
+  beside.distance = -0.38f;  // x = 0.38, 12 cm past its edge
+  EXPECT_FALSE(ss::planeNearPoints(cloud, book, beside, Eigen::Vector3f::UnitZ()));
+}

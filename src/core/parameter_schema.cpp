@@ -115,6 +115,8 @@ const Schema& schema() {
                                 [](auto& c) -> auto& { return c.symmetry.object_size; });
     s.section<DuplicateParams>("symmetry.dedup", "stage dedup: one segment per object",
                                [](auto& c) -> auto& { return c.symmetry.dedup; });
+    s.section<CompletionParams>("symmetry.completion", "stage completion: each object's unseen side from its symmetry",
+                                [](auto& c) -> auto& { return c.symmetry.completion; });
     s.section<StrayColorParams>("symmetry.stray_color_pieces", "stage stray_color_pieces: strips of the next object's colour",
                                 [](auto& c) -> auto& { return c.symmetry.stray_color_pieces; });
     return s;

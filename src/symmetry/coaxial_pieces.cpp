@@ -44,9 +44,10 @@ std::pair<Eigen::Vector3f, float> closestApproach(const Cloud& cloud, const std:
   return {middle, std::sqrt(best)};
 }
 
-std::optional<Eigen::Vector3f> CoaxialPieceStage::revolutionAxis(const Cloud& cloud, const std::vector<int>& points,
-                                                                 const Eigen::Vector3f& up) const {
-  const auto axes = fitVerticalAxes(cloud, points, up, axes_);
+std::optional<Eigen::Vector3f> revolutionAxis(const Cloud& cloud, const std::vector<int>& points,
+                                              const Eigen::Vector3f& up, const UprightHypothesisParams& axes_params,
+                                              float min_axis_share) {
+  const auto axes = fitVerticalAxes(cloud, points, up, axes_params);
   if (axes.empty()) return std::nullopt;
   // Most side points' normal lines must pass the axis: a box's faces have normal lines that
   // cross near its centre line, and its rounded edges' normals turn, but most miss it.
@@ -58,9 +59,9 @@ std::optional<Eigen::Vector3f> CoaxialPieceStage::revolutionAxis(const Cloud& cl
     ++sides;
     Eigen::Vector3f offset = axis - cloud[i].getVector3fMap();
     offset -= offset.dot(up) * up;
-    through += std::fabs(up.cross(normal).dot(offset)) < axes_.max_axis_residual;
+    through += std::fabs(up.cross(normal).dot(offset)) < axes_params.max_axis_residual;
   }
-  if (sides == 0 || static_cast<float>(through) < params_.min_axis_share * static_cast<float>(sides)) return std::nullopt;
+  if (sides == 0 || static_cast<float>(through) < min_axis_share * static_cast<float>(sides)) return std::nullopt;
   return axis;
 }
 
@@ -110,7 +111,7 @@ void CoaxialPieceStage::run(PipelineState& state) const {
   std::vector<std::optional<std::optional<Eigen::Vector3f>>> fitted(state.segments.size());
   const auto axisOf = [&](std::size_t s) -> const std::optional<Eigen::Vector3f>& {
     auto& axis = fitted[same_points[s]];
-    if (!axis) axis = revolutionAxis(cloud, state.segments[s].points, up);
+    if (!axis) axis = revolutionAxis(cloud, state.segments[s].points, up, axes_, params_.min_axis_share);
     return *axis;
   };
   std::vector<CandidateSegment> unions;

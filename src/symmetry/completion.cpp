@@ -2,14 +2,28 @@
 #include "symmetry_segmentation/symmetry/completion.h"
 
 #include <cmath>
+#include <map>
+#include <set>
+#include <tuple>
 #include <limits>
 
+#include "symmetry_segmentation/occupancy.h"
 #include "symmetry_segmentation/quantile.h"
 #include "symmetry_segmentation/symmetry/pipeline_state.h"
+#include "symmetry_segmentation/symmetry/coaxial_pieces.h"
+#include "symmetry_segmentation/symmetry/object_size.h"
 #include "symmetry_segmentation/symmetry/reflection_data_term.h"
+#include "symmetry_segmentation/symmetry/symmetric_graph_cut.h"
+#include "symmetry_segmentation/symmetry/upright_hypotheses.h"
 #include "symmetry_segmentation/symmetry/symmetry_plane.h"
 
 namespace symmetry_segmentation {
+namespace {
+// A surface of revolution seen from one side spans twice its radius; from all sides too.
+constexpr float kMaxRadiusShare = 0.6f;
+constexpr float kHeightSlice = 0.02f;         // m
+constexpr float kMaxRadiusDeviation = 0.08f;  // median deviation from the slice's median radius, of the radius
+}  // namespace
 
 std::vector<Eigen::Vector3f> hiddenSideReflections(const SceneEvidence& evidence, const std::vector<int>& points,
                                                    const SymmetryPlane& plane,
@@ -27,6 +41,91 @@ std::vector<Eigen::Vector3f> hiddenSideReflections(const SceneEvidence& evidence
     hidden.push_back(reflected);
   }
   return hidden;
+}
+
+std::vector<Eigen::Vector3f> revolvedHiddenPoints(const std::vector<Eigen::Vector3f>& points,
+                                                  const Eigen::Vector3f& axis_point, const Eigen::Vector3f& up,
+                                                  int steps, const std::function<bool(const Eigen::Vector3f&)>& hidden) {
+  std::vector<Eigen::Vector3f> result;
+  for (int k = 1; k < steps; ++k) {
+    const Eigen::AngleAxisf turn(2.0f * static_cast<float>(M_PI) * static_cast<float>(k) / static_cast<float>(steps), up);
+    for (const Eigen::Vector3f& p : points) {
+      const Eigen::Vector3f q = axis_point + turn * (p - axis_point);
+      if (hidden(q)) result.push_back(q);
+    }
+  }
+  return result;
+}
+
+std::vector<int> revolutionSurface(const Cloud& cloud, const std::vector<int>& points, const Eigen::Vector3f& axis_point,
+                                   const Eigen::Vector3f& up, const UprightHypothesisParams& axes) {
+  const float max_residual = axes.max_axis_residual;
+  std::vector<int> surface;
+  std::vector<float> radii;
+  for (int i : points) {
+    Eigen::Vector3f normal;
+    if (!horizontalNormal(cloud, i, up, normal)) continue;
+    Eigen::Vector3f offset = axis_point - cloud[i].getVector3fMap();
+    offset -= offset.dot(up) * up;
+    if (std::fabs(up.cross(normal).dot(offset)) >= max_residual) continue;
+    surface.push_back(i);
+    radii.push_back(offset.norm());
+  }
+  if (surface.empty()) return surface;
+  // The widest horizontal extent of the points: over a few directions about up.
+  const Eigen::Vector3f u = up.unitOrthogonal();
+  const Eigen::Vector3f v = up.cross(u);
+  float widest = 0.0f;
+  for (int k = 0; k < 8; ++k) {
+    const float angle = static_cast<float>(M_PI) * static_cast<float>(k) / 8.0f;
+    const Eigen::Vector3f direction = std::cos(angle) * u + std::sin(angle) * v;
+    float low = std::numeric_limits<float>::max(), high = std::numeric_limits<float>::lowest();
+    for (int i : points) {
+      low = std::min(low, direction.dot(cloud[i].getVector3fMap()));
+      high = std::max(high, direction.dot(cloud[i].getVector3fMap()));
+    }
+    widest = std::max(widest, high - low);
+  }
+  // Round: at one height, the same distance from the axis (a box's faces are nearer the axis
+  // in their middle than at their edges, by up to 40 %).
+  std::map<long, std::vector<float>> by_height;
+  for (std::size_t k = 0; k < surface.size(); ++k) {
+    by_height[std::lround(std::floor(up.dot(cloud[surface[k]].getVector3fMap()) / kHeightSlice))].push_back(radii[k]);
+  }
+  std::vector<float> deviations;
+  for (auto& [slice, slice_radii] : by_height) {
+    std::vector<float> copy = slice_radii;
+    const float middle = quantileOf(copy, 0.5f);
+    for (float r : slice_radii) deviations.push_back(std::fabs(r - middle));
+  }
+  std::vector<float> all_radii = radii;
+  const float radius = quantileOf(all_radii, 0.5f);
+  if (radius > kMaxRadiusShare * widest) return {};
+  if (quantileOf(deviations, 0.5f) > kMaxRadiusDeviation * radius) return {};
+  // Normals that turn continuously: the middles of a box's faces are round about its centre line.
+  if (!coversAnArc(cloud, surface, up, axes)) return {};
+  return surface;
+}
+
+std::vector<Eigen::Vector3f> onePerCell(const std::vector<Eigen::Vector3f>& points, float cell) {
+  std::set<std::tuple<long, long, long>> taken;
+  std::vector<Eigen::Vector3f> result;
+  for (const Eigen::Vector3f& p : points) {
+    const auto key = std::make_tuple(std::lround(std::floor(p.x() / cell)), std::lround(std::floor(p.y() / cell)),
+                                     std::lround(std::floor(p.z() / cell)));
+    if (taken.insert(key).second) result.push_back(p);
+  }
+  return result;
+}
+
+bool planeNearPoints(const Cloud& cloud, const std::vector<int>& points, const SymmetryPlane& plane,
+                     const std::optional<Eigen::Vector3f>& up) {
+  if (points.empty()) return false;
+  Eigen::Vector3f centroid = Eigen::Vector3f::Zero();
+  for (int index : points) centroid += cloud.points[index].getVector3fMap();
+  centroid /= static_cast<float>(points.size());
+  const float largest = segmentExtents(cloud, points, up).maxCoeff();
+  return std::fabs(plane.normal.dot(centroid) + plane.distance) <= 0.5f * largest;
 }
 
 ObjectBox completedBox(const std::vector<Eigen::Vector3f>& visible, const std::vector<Eigen::Vector3f>& added,
@@ -84,12 +183,40 @@ Eigen::Isometry3f symmetryFrame(const Eigen::Vector3f& centroid, const SymmetryP
 void CompletionStage::run(PipelineState& state) const {
   std::optional<PlaneCoefficients> table;
   if (state.prepared.has_table) table = state.prepared.table_plane;
-  std::size_t added = 0;
+  const Cloud& cloud = *state.cloud;
+  // Unobserved space (not free) above the table with no observed point within a voxel.
+  const auto hidden = [&](const Eigen::Vector3f& q) {
+    if (table && table->head<3>().dot(q) + (*table)[3] < 0.0f) return false;
+    if (state.occupancy->classify(q) == Occupancy::Free) return false;
+    std::vector<int> near;
+    std::vector<float> squared;
+    PointT query;
+    query.getVector3fMap() = q;
+    return state.graph->tree().radiusSearch(query, voxel_size_, near, squared, 1) == 0;
+  };
+  std::size_t added = 0, revolved = 0;
   for (CandidateSegment& segment : state.segments) {
-    segment.completion = hiddenSideReflections(*state.evidence, segment.points, segment.plane, table);
+    std::vector<Eigen::Vector3f> points;
+    if (planeNearPoints(cloud, segment.points, segment.plane, state.up)) {
+      points = hiddenSideReflections(*state.evidence, segment.points, segment.plane, table);
+    }
+    std::optional<Eigen::Vector3f> axis;
+    if (state.up && params_.revolution_steps > 1) axis = revolutionAxis(cloud, segment.points, *state.up, axes_, min_axis_share_);
+    const std::vector<int> surface =
+        axis ? revolutionSurface(cloud, segment.points, *axis, *state.up, axes_) : std::vector<int>{};
+    if (!surface.empty()) {
+      std::vector<Eigen::Vector3f> seen;
+      seen.reserve(surface.size());
+      for (int index : surface) seen.push_back(cloud.points[index].getVector3fMap());
+      const auto turned = revolvedHiddenPoints(seen, *axis, *state.up, params_.revolution_steps, hidden);
+      points.insert(points.end(), turned.begin(), turned.end());
+      ++revolved;
+    }
+    segment.completion = onePerCell(points, voxel_size_);
     added += segment.completion->size();
   }
   state.count("points", added);
+  state.count("revolved", revolved);
 }
 
 }  // namespace symmetry_segmentation

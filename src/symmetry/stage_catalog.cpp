@@ -102,9 +102,12 @@ const std::vector<StageInfo>& stageCatalog() {
       {"object_bottoms", K::SegmentRewriter, "each segment gets back its sides' points within the table margin",
        {P::Segments}, {},
        [](const Config& c) { return made<ObjectBottomStage>(c.object_bottoms, c.preprocessing.voxel_size); }},
-      {"completion", K::SegmentRewriter, "each segment's unseen side: its reflections into unobserved space (the completed box and symmetry frame)",
+      {"completion", K::SegmentRewriter, "each segment's unseen side: its reflections (and turned copies, about an axis of revolution) into unobserved space; the completed box and symmetry frame",
        {P::Segments}, {},
-       [](const Config&) { return made<CompletionStage>(); }},
+       [](const Config& c) {
+         return made<CompletionStage>(c.symmetry.completion, c.symmetry.upright, c.symmetry.coaxial_pieces.min_axis_share,
+                                      c.preprocessing.voxel_size);
+       }},
   };
   return catalog;
 }

@@ -40,17 +40,19 @@ float rangeOverlap(const std::pair<float, float>& first, const std::pair<float, 
 float heightOverlap(const Cloud& cloud, const std::vector<int>& first, const std::vector<int>& second,
                     const Eigen::Vector3f& up);
 
+/// The vertical axis (a point on it) `points` turn about, if they are a surface of revolution:
+/// the upright stage's axis of most of them, which `min_axis_share` of the side points' normal
+/// lines pass (within axes.max_axis_residual).
+std::optional<Eigen::Vector3f> revolutionAxis(const Cloud& cloud, const std::vector<int>& points,
+                                              const Eigen::Vector3f& up, const UprightHypothesisParams& axes,
+                                              float min_axis_share);
+
 class CoaxialPieceStage : public Stage {
  public:
   CoaxialPieceStage(const CoaxialPieceParams& params, const UprightHypothesisParams& axes,
                     const SymmetryFilterParams& filter)
       : params_(params), axes_(axes), filter_(filter) {}
   void run(PipelineState& state) const override;
-
-  /// The vertical axis `points` turn about, if they are a surface of revolution: the upright
-  /// stage's axis of most of them, which min_axis_share of the side points' normal lines pass.
-  std::optional<Eigen::Vector3f> revolutionAxis(const Cloud& cloud, const std::vector<int>& points,
-                                                const Eigen::Vector3f& up) const;
 
  private:
   CoaxialPieceParams params_;

@@ -4,9 +4,12 @@
 // found says where the other half is. The reflection of a visible point that lands in space no
 // view observed (unknown or occluded, not free, no observed point there, not under the table)
 // is a point of the object's unseen side; reflections onto observed points add nothing new and
-// reflections into free space are not the object. Runs last: it changes no segment, it
+// reflections into free space are not the object. A surface of revolution seen from one side is
+// mirrored onto itself by its planes through the viewer; copies of it turned about its axis
+// that land in unobserved space are its back. Runs last: it changes no segment, it
 // describes each one (reportedSegments turns it into the completed box and the symmetry frame).
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -18,6 +21,7 @@
 #include "symmetry_segmentation/segmentation_result.h"
 #include "symmetry_segmentation/symmetry/scene_evidence.h"
 #include "symmetry_segmentation/symmetry/stage.h"
+#include "symmetry_segmentation/symmetry/symmetry_params.h"
 
 namespace symmetry_segmentation {
 
@@ -27,6 +31,35 @@ namespace symmetry_segmentation {
 std::vector<Eigen::Vector3f> hiddenSideReflections(const SceneEvidence& evidence, const std::vector<int>& points,
                                                    const SymmetryPlane& plane,
                                                    const std::optional<PlaneCoefficients>& table);
+
+/// Whether `plane` passes within half the largest extent (segmentExtents) of the centroid of
+/// `points` (indices into `cloud`). A flat object is mirror-symmetric about any plane across it,
+/// one far beside it too, whose reflections land in space nobody saw, metres from the object; a
+/// box seen face-on has its plane half its depth behind the face, and a depth up to its width
+/// or height passes.
+bool planeNearPoints(const Cloud& cloud, const std::vector<int>& points, const SymmetryPlane& plane,
+                     const std::optional<Eigen::Vector3f>& up);
+
+/// Copies of `points` turned about the axis through `axis_point` along `up` (unit) by k x 360 /
+/// `steps` degrees, k = 1 .. steps - 1, that `hidden` accepts: a can seen from the front is
+/// mirrored onto itself by its planes through the viewer, its back comes from turning it.
+std::vector<Eigen::Vector3f> revolvedHiddenPoints(const std::vector<Eigen::Vector3f>& points,
+                                                  const Eigen::Vector3f& axis_point, const Eigen::Vector3f& up,
+                                                  int steps, const std::function<bool(const Eigen::Vector3f&)>& hidden);
+
+/// The points of `points` (indices into `cloud`) on the surface of revolution about the vertical
+/// axis through `axis_point` (`up` unit): side points whose normal line passes within
+/// axes.max_axis_residual of the axis - not a mug's handle, not a lid. Empty when their median distance
+/// from the axis is more than 0.6 of the widest horizontal extent of `points` (an axis fitted
+/// through a neighbour's points, not one behind a surface seen from one side), or when they are
+/// not round: their distances from the axis differ by more than 8 % (median) from the median at
+/// their height (2 cm slices), or their normals do not turn continuously (coversAnArc; the
+/// middles of a box's faces are round about its centre line).
+std::vector<int> revolutionSurface(const Cloud& cloud, const std::vector<int>& points, const Eigen::Vector3f& axis_point,
+                                   const Eigen::Vector3f& up, const UprightHypothesisParams& axes);
+
+/// The first of `points` in each `cell`-sized cube, in order.
+std::vector<Eigen::Vector3f> onePerCell(const std::vector<Eigen::Vector3f>& points, float cell);
 
 /// The box of the completed object: turned as objectBox turns the visible points, bounded by
 /// every visible point and by the added points less the `trim` share at either end of each axis
@@ -41,10 +74,21 @@ ObjectBox completedBox(const std::vector<Eigen::Vector3f>& visible, const std::v
 Eigen::Isometry3f symmetryFrame(const Eigen::Vector3f& centroid, const SymmetryPlane& plane,
                                 const std::optional<Eigen::Vector3f>& up);
 
-/// The stage: every segment's hidden-side reflections.
+/// The stage: every segment's hidden-side reflections and, when it turns about a vertical axis,
+/// its turned copies that land in unobserved space away from every observed point (one per
+/// working voxel).
 class CompletionStage : public Stage {
  public:
+  CompletionStage(const CompletionParams& params, const UprightHypothesisParams& axes, float min_axis_share,
+                  float voxel_size)
+      : params_(params), axes_(axes), min_axis_share_(min_axis_share), voxel_size_(voxel_size) {}
   void run(PipelineState& state) const override;
+
+ private:
+  CompletionParams params_;
+  UprightHypothesisParams axes_;
+  float min_axis_share_;
+  float voxel_size_;
 };
 
 }  // namespace symmetry_segmentation

@@ -439,6 +439,17 @@ inline void describeParameters(ParameterList<CoaxialPieceParams>& list) {
            "...and the two span the same heights over this share of the shorter one's height: one object's walls, not one object on another");
 }
 
+/// Stage completion: each object's unseen side from its symmetry.
+struct CompletionParams {
+  int revolution_steps = 12;
+};
+
+inline void describeParameters(ParameterList<CompletionParams>& list) {
+  list.add("revolution_steps", &CompletionParams::revolution_steps, 0, 360, "",
+           "a segment turning about a vertical axis (coaxial_pieces.min_axis_share) is also completed by copies turned "
+           "by this many equal steps about it; 0: by its reflection alone");
+}
+
 struct SymmetryParams {
   int threads = 0;
   bool depth_image_occupancy = true;
@@ -462,6 +473,7 @@ struct SymmetryParams {
   ColorSeamParams color_seams;
   CoaxialPieceParams coaxial_pieces;
   ObjectSizeParams object_size;
+  CompletionParams completion;
   DuplicateParams dedup;
   StrayColorParams stray_color_pieces;
 };
