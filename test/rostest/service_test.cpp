@@ -176,6 +176,28 @@ TEST(SegmentService, SuccessWithLatestCloudAndCachedMap) {
   EXPECT_EQ(srv.response.timing_stages.back(), "total");
   EXPECT_EQ(srv.response.timing_stages.size(), srv.response.timing_ms.size());
   EXPECT_GT(srv.response.timing_ms.back(), 0.0);
+  // The symmetry method completes every object: its points and the added ones, box and frame.
+  for (const auto& object : srv.response.objects.objects) {
+    ASSERT_TRUE(object.has_completion) << "object " << object.id;
+    EXPECT_EQ(object.completed_cloud.width * object.completed_cloud.height,
+              object.cloud.width * object.cloud.height + object.completion_points);
+    EXPECT_GE(object.completed_box_size.z + 1e-6, object.bounding_box_size.z);
+  }
+
+  // A reply to print: the same objects without their clouds.
+  ss::SegmentCloud::Request small_request;
+  small_request.timeout = 5.0;
+  small_request.without_clouds = true;
+  const auto small = call(small_request);
+  ASSERT_EQ(small.response.status, Response::SUCCESS) << small.response.message;
+  ASSERT_EQ(small.response.objects.objects.size(), srv.response.objects.objects.size());
+  for (std::size_t i = 0; i < small.response.objects.objects.size(); ++i) {
+    const auto& object = small.response.objects.objects[i];
+    EXPECT_TRUE(object.cloud.data.empty());
+    EXPECT_TRUE(object.completed_cloud.data.empty());
+    EXPECT_EQ(object.indices, srv.response.objects.objects[i].indices);
+    EXPECT_EQ(object.completion_points, srv.response.objects.objects[i].completion_points);
+  }
 
   // A region of interest around the first object keeps only objects inside it.
   const auto& first = srv.response.objects.objects.at(0);
