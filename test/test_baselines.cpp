@@ -73,6 +73,17 @@ TEST(Baselines, LccpSeparatesTouchingBoxesAtTheConcaveEdge) {
   }
   EXPECT_TRUE(first_found);
   EXPECT_TRUE(second_found);
+  // Every method's segments come with their boxes, standing on the table.
+  for (const auto& segment : result.segments) {
+    ASSERT_TRUE(segment.box.has_value());
+    EXPECT_GT(segment.box->axes.col(2).z(), 0.999f);
+    EXPECT_GE(segment.box->size.x(), segment.box->size.y());
+    for (int i : segment.indices) {  // holding the segment's points
+      const Eigen::Vector3f local =
+          segment.box->axes.transpose() * (touching.cloud->points[i].getVector3fMap() - segment.box->center);
+      EXPECT_TRUE((local.cwiseAbs().array() <= 0.5f * segment.box->size.array() + 1e-4f).all());
+    }
+  }
 }
 
 TEST(Baselines, UnknownMethodIsAnError) {

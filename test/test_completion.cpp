@@ -37,14 +37,18 @@ TEST(Completion, OnlyReflectionsIntoUnobservedSpaceAboveTheTableAreAdded) {
   ss::SymmetryPlane plane;
   plane.normal = Eigen::Vector3f(1.0f, 0.0f, -0.1f).normalized();
   plane.distance = 0.0f;
-  const ss::PlaneCoefficients table(0, 0, 1, 0);
-  const auto added = ss::hiddenSideReflections(evidence, {0, 1, 2, 3, 4}, plane, table);
+  // Hidden (the stage: unobserved, nothing observed near, not under the table): here above the
+  // table z = 0.
+  const auto above_table = [](const Eigen::Vector3f& q) { return q.z() >= 0.0f; };
+  const auto added = ss::hiddenSideReflections(evidence, {0, 1, 2, 3, 4}, plane, above_table);
   // Point 1 mirrors onto nothing known either (the fake answers per index) and lands at x < 0
   // above the table: added, like point 3.
   ASSERT_EQ(added.size(), 2u);
+  EXPECT_TRUE(added[0].isApprox(ss::reflectPoint(plane, cloud[1].getVector3fMap())));
   EXPECT_TRUE(added[1].isApprox(ss::reflectPoint(plane, cloud[3].getVector3fMap())));
-  const auto without_table = ss::hiddenSideReflections(evidence, {0, 1, 2, 3, 4}, plane, std::nullopt);
-  EXPECT_EQ(without_table.size(), 3u);  // with no table, nothing is under it
+  const auto anywhere = ss::hiddenSideReflections(evidence, {0, 1, 2, 3, 4}, plane,
+                                                  [](const Eigen::Vector3f&) { return true; });
+  EXPECT_EQ(anywhere.size(), 3u);  // point 4's reflection, under the table, only when that is hidden too
 }
 
 TEST(Completion, TheCompletedBoxTrimsStrayReflectionsButKeepsTheHiddenSide) {
@@ -136,7 +140,7 @@ TEST(Completion, ACanSeenFromTheFrontIsTurnedIntoItsBack) {
 }
 
 TEST(Completion, APlaneFarBesideAFlatObjectCompletesNothing) {
-  // A book, 26 x 17 cm, lying flat: every plane across it is a symmetry, one 25 cm beside it too.
+  // A book, 26 x 17 cm, lying flat: every plane across it is a symmetry, one beside it too.
   ss::Cloud cloud;
   std::vector<int> book;
   for (float x = 0.0f; x <= 0.26f; x += 0.01f) {

@@ -349,4 +349,8 @@ TEST(EvaluateCompletion, ReportsScenesWithWholeShapesAndRejectsOthers) {
   const auto none = runCommand(toolPath("evaluate_completion") + " " + dir + "/labelled_only");
   EXPECT_EQ(none.exit_code, 2);
   EXPECT_NE(none.output.find("no scene with objects.yaml"), std::string::npos) << none.output;
+  writeTextFile(dir + "/no_completion.yaml", "symmetry:\n  stages: [curves, curve_pairs, cut, refine, filter, dedup]\n");
+  const auto off = runCommand(toolPath("evaluate_completion") + " " + dir + "/isolated_4 --config " + dir + "/no_completion.yaml");
+  EXPECT_EQ(off.exit_code, 2);
+  EXPECT_NE(off.output.find("no 'completion'"), std::string::npos) << off.output;
 }

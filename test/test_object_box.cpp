@@ -122,7 +122,7 @@ TEST(ObjectBox, UnusablePointsAndBadIndicesAreLeftOut) {
   EXPECT_EQ(empty.axes, Eigen::Matrix3f::Identity());
 }
 
-TEST(ObjectBox, EveryMethodsSegmentsGetBoxesUpTheSupport) {
+TEST(ObjectBox, AddObjectBoxesTakesTheSupportsUpElseTheScenes) {
   ss::Scene scene;
   auto cloud = std::make_shared<ss::Cloud>(boxSurface({0, 0, 0.05f}, Eigen::Matrix3f::Identity(), {0.2f, 0.1f, 0.1f}, true, true));
   scene.cloud = cloud;

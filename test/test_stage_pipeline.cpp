@@ -126,6 +126,11 @@ TEST(StageList, AListThatCannotRunIsRejectedWithItsReason) {
                 .find("'occluder_gaps' (position 6) needs every earlier hypothesis cut"),
             std::string::npos);
   EXPECT_TRUE(ss::stageListProblems({"curves", "curve_pairs", "cut", "occluder_gaps", "refine", "filter"}).empty());
+  // completion describes the final segments: nothing may change them after it.
+  EXPECT_NE(problemsOf({"curves", "curve_pairs", "cut", "filter", "completion", "dedup"})
+                .find("'completion' (position 5) describes the final segments"),
+            std::string::npos);
+  EXPECT_TRUE(ss::stageListProblems({"curves", "curve_pairs", "cut", "filter", "dedup", "completion"}).empty());
 
   // The configuration rejects such a list as a whole and keeps the previous one.
   ss::SegmentationConfig config;

@@ -1,9 +1,10 @@
 #pragma once
-// The box a grasp planner gets for each object: the smallest box around its points that stands
-// on the support (one axis along gravity), because grippers approach objects on a table from
+// The box a grasp planner gets for each object: a tight box around its points that stands on
+// the support (one axis along gravity), because grippers approach objects on a table from
 // above or from the side, and a box tilted along the visible points' variance misleads both.
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -14,12 +15,18 @@
 namespace symmetry_segmentation {
 
 /// The box around the usable points `indices` selects from `cloud`, in the cloud's frame.
-/// With `up` (unit, the support's normal or gravity's opposite): z = up, x and y the sides of the
-/// smallest-area rectangle around the footprint (the points projected along up), x the longer;
+/// With `up` (unit, the support's normal or gravity's opposite): z = up, x and y the sides of a
+/// rectangle around the footprint (the points projected along up) - of those within 15 % of the
+/// smallest area, the one whose sides most points lie on -, x the longer;
 /// size = (length along x, along y, height). Without: the points' principal axes, ordered by the
 /// box's extent along them (x the longest). Right-handed; x's sign is arbitrary. An empty box
 /// (zero size, identity axes) when no point is usable.
 ObjectBox objectBox(const Cloud& cloud, const std::vector<int>& indices, const std::optional<Eigen::Vector3f>& up);
+
+/// What is wrong with `box` as a box ("" when nothing): a value not finite, a negative size,
+/// axes that are not a rotation (unit, orthogonal, right-handed, within 1e-3). For readers of
+/// boxes from files.
+std::string boxProblem(const ObjectBox& box);
 
 /// The up direction boxes use for `result` of `scene`: the support's normal, else the scene's up.
 std::optional<Eigen::Vector3f> boxUp(const Scene& scene, const SegmentationResult& result);

@@ -19,8 +19,14 @@ Eigen::Vector3i segmentColor(std::size_t index);
 /// Every input point, coloured by the first segment holding it; others keep a dimmed grey.
 pcl::PointCloud<pcl::PointXYZRGB> colorBySegment(const Cloud& cloud, const std::vector<Segment>& segments);
 
-/// Each segment's points in its colour and its completion's added points (its unseen side) in
-/// a lighter shade of it; nothing else.
+/// The colour of what completion added to segment `index`: its colour halfway to white.
+Eigen::Vector3i addedPointColor(std::size_t index);
+
+/// Every segment's completion's added points (its unseen side), in addedPointColor.
+pcl::PointCloud<pcl::PointXYZRGB> addedPoints(const std::vector<Segment>& segments);
+
+/// Each segment's points in its colour and its completion's added points in addedPointColor;
+/// nothing else.
 pcl::PointCloud<pcl::PointXYZRGB> completedObjects(const Cloud& cloud, const std::vector<Segment>& segments);
 
 void writeColoredPly(const pcl::PointCloud<pcl::PointXYZRGB>& cloud, const std::string& path);

@@ -177,6 +177,15 @@ ObjectBox objectBox(const Cloud& cloud, const std::vector<int>& indices, const s
   return principalBox(points);
 }
 
+std::string boxProblem(const ObjectBox& box) {
+  if (!box.center.allFinite() || !box.axes.allFinite() || !box.size.allFinite()) return "box values must be finite";
+  if ((box.size.array() < 0.0f).any()) return "box size must not be negative";
+  if (!(box.axes.transpose() * box.axes).isApprox(Eigen::Matrix3f::Identity(), 1e-3f) || !(box.axes.determinant() > 0.0f)) {
+    return "box axes must be unit, orthogonal and right-handed";
+  }
+  return "";
+}
+
 std::optional<Eigen::Vector3f> boxUp(const Scene& scene, const SegmentationResult& result) {
   if (result.support && result.support->plane.head<3>().norm() > 0.0f) return result.support->plane.head<3>().normalized();
   return scene.up;

@@ -58,27 +58,49 @@ pcl::PointCloud<pcl::PointXYZRGB> colorBySegment(const Cloud& cloud, const std::
   return colored;
 }
 
+namespace {
+
+pcl::PointXYZRGB coloredPoint(const Eigen::Vector3f& p, const Eigen::Vector3i& c) {
+  pcl::PointXYZRGB q;
+  q.x = p.x();
+  q.y = p.y();
+  q.z = p.z();
+  q.r = static_cast<std::uint8_t>(c.x());
+  q.g = static_cast<std::uint8_t>(c.y());
+  q.b = static_cast<std::uint8_t>(c.z());
+  return q;
+}
+
+void addSegmentsAddedPoints(const Segment& segment, std::size_t index, pcl::PointCloud<pcl::PointXYZRGB>& out) {
+  if (!segment.completion) return;
+  const Eigen::Vector3i shade = addedPointColor(index);
+  for (const Eigen::Vector3f& p : segment.completion->points) out.push_back(coloredPoint(p, shade));
+}
+
+}  // namespace
+
+Eigen::Vector3i addedPointColor(std::size_t index) {
+  return (segmentColor(index) + Eigen::Vector3i::Constant(255)) / 2;
+}
+
+pcl::PointCloud<pcl::PointXYZRGB> addedPoints(const std::vector<Segment>& segments) {
+  pcl::PointCloud<pcl::PointXYZRGB> added;
+  for (std::size_t s = 0; s < segments.size(); ++s) addSegmentsAddedPoints(segments[s], s, added);
+  added.width = static_cast<std::uint32_t>(added.size());
+  added.height = 1;
+  return added;
+}
+
 pcl::PointCloud<pcl::PointXYZRGB> completedObjects(const Cloud& cloud, const std::vector<Segment>& segments) {
   pcl::PointCloud<pcl::PointXYZRGB> colored;
   for (std::size_t s = 0; s < segments.size(); ++s) {
     const Eigen::Vector3i color = segmentColor(s);
-    const Eigen::Vector3i shade = (color + Eigen::Vector3i::Constant(255)) / 2;  // halfway to white
-    auto add = [&](const Eigen::Vector3f& p, const Eigen::Vector3i& c) {
-      pcl::PointXYZRGB q;
-      q.x = p.x();
-      q.y = p.y();
-      q.z = p.z();
-      q.r = static_cast<std::uint8_t>(c.x());
-      q.g = static_cast<std::uint8_t>(c.y());
-      q.b = static_cast<std::uint8_t>(c.z());
-      colored.push_back(q);
-    };
     for (int index : segments[s].indices) {
-      if (index >= 0 && static_cast<std::size_t>(index) < cloud.size()) add(cloud.points[index].getVector3fMap(), color);
+      if (index >= 0 && static_cast<std::size_t>(index) < cloud.size()) {
+        colored.push_back(coloredPoint(cloud.points[index].getVector3fMap(), color));
+      }
     }
-    if (segments[s].completion) {
-      for (const Eigen::Vector3f& p : segments[s].completion->points) add(p, shade);
-    }
+    addSegmentsAddedPoints(segments[s], s, colored);
   }
   colored.width = static_cast<std::uint32_t>(colored.size());
   colored.height = 1;

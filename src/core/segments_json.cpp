@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "symmetry_segmentation/errors.h"
+#include "symmetry_segmentation/object_box.h"
 
 namespace symmetry_segmentation {
 using Json = nlohmann::ordered_json;
@@ -162,11 +163,11 @@ ObjectBox objectBox(const std::string& path, const Json& json) {
   for (int k = 0; k < 3; ++k) {
     const std::vector<float> axis = finiteNumbers(path, axes[k], 3, "box axis");
     box.axes.col(k) = Eigen::Vector3f(axis[0], axis[1], axis[2]);
-    if (std::abs(box.axes.col(k).norm() - 1.0f) > 1e-3f) malformed(path, "box axes must be unit vectors");
   }
   box.center = Eigen::Vector3f(center[0], center[1], center[2]);
   box.size = Eigen::Vector3f(size[0], size[1], size[2]);
-  if ((box.size.array() < 0.0f).any()) malformed(path, "box size must not be negative");
+  const std::string problem = boxProblem(box);
+  if (!problem.empty()) malformed(path, problem);
   return box;
 }
 

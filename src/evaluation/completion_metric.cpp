@@ -5,7 +5,6 @@
 #include <limits>
 #include <map>
 #include <set>
-#include <tuple>
 
 #include <boost/filesystem.hpp>
 #include <pcl/io/ply_io.h>
@@ -14,6 +13,8 @@
 #include <yaml-cpp/yaml.h>
 
 #include "symmetry_segmentation/errors.h"
+#include "symmetry_segmentation/object_box.h"
+#include "symmetry_segmentation/symmetry/completion.h"
 
 namespace symmetry_segmentation {
 namespace {
@@ -60,19 +61,6 @@ double meanNearest(const std::vector<Eigen::Vector3f>& from, const std::vector<E
   return sum / static_cast<double>(from.size());
 }
 
-/// One point per `cell`-sized cube (the first): the visible points of a fused cloud lie a few
-/// millimetres apart, the added ones a working voxel apart, and the Chamfer means weigh both alike.
-std::vector<Eigen::Vector3f> thinned(const std::vector<Eigen::Vector3f>& points, float cell) {
-  std::map<std::tuple<long, long, long>, bool> seen;
-  std::vector<Eigen::Vector3f> result;
-  for (const auto& p : points) {
-    const auto key = std::make_tuple(std::lround(std::floor(p.x() / cell)), std::lround(std::floor(p.y() / cell)),
-                                     std::lround(std::floor(p.z() / cell)));
-    if (seen.emplace(key, true).second) result.push_back(p);
-  }
-  return result;
-}
-
 /// The true box, for a round shape turned about its z so that its x lies along the horizontal
 /// part of the one axis of `other` nearest to horizontal.
 ObjectBox trueBoxFacing(const TrueShape& shape, const ObjectBox& other) {
@@ -115,6 +103,8 @@ std::vector<TrueShape> loadTrueShapes(const std::string& scene_dir) {
       const YAML::Node axes = box["axes"];
       if (!axes || !axes.IsSequence() || axes.size() != 3) throw InputError(yaml_path, "box axes need 3 rows");
       for (int k = 0; k < 3; ++k) shape.box.axes.col(k) = vector3(axes[k], yaml_path, "box axis");
+      const std::string problem = boxProblem(shape.box);
+      if (!problem.empty()) throw InputError(yaml_path, problem);
       by_label[shape.label] = shapes.size();
       shapes.push_back(std::move(shape));
     }
@@ -179,7 +169,9 @@ std::vector<CompletionScore> scoreCompletion(const Scene& scene, const Segmentat
     if (!best || best_iou <= 0.5 || !best->box || !best->completion) continue;
     std::vector<Eigen::Vector3f> visible;
     for (int index : best->indices) visible.push_back(scene.cloud->points[index].getVector3fMap());
-    visible = thinned(visible, kChamferCell);
+    // The visible points of a fused cloud lie a few millimetres apart, the added ones a working
+    // voxel apart: one per cell, so that the Chamfer means weigh both alike.
+    visible = onePerCell(visible, kChamferCell);
     std::vector<Eigen::Vector3f> completed = visible;
     completed.insert(completed.end(), best->completion->points.begin(), best->completion->points.end());
     CompletionScore score;

@@ -50,12 +50,14 @@ visualization_msgs::Marker baseMarker(const std_msgs::Header& header, const std:
   return marker;
 }
 
-/// The segment's colour halfway to white: what completion added, as segments_completed.ply has it.
-std_msgs::ColorRGBA lighterColorOf(std::size_t segment, float alpha) {
-  std_msgs::ColorRGBA color = colorOf(segment, alpha);
-  color.r = 0.5f * (color.r + 1.0f);
-  color.g = 0.5f * (color.g + 1.0f);
-  color.b = 0.5f * (color.b + 1.0f);
+/// What completion added to `segment`, in the colour segments_completed.ply has it.
+std_msgs::ColorRGBA addedColorOf(std::size_t segment, float alpha) {
+  const Eigen::Vector3i rgb = addedPointColor(segment);
+  std_msgs::ColorRGBA color;
+  color.r = rgb.x() / 255.0f;
+  color.g = rgb.y() / 255.0f;
+  color.b = rgb.z() / 255.0f;
+  color.a = alpha;
   return color;
 }
 
@@ -150,9 +152,9 @@ visualization_msgs::MarkerArray symmetryMarkers(const Cloud& cloud, const Segmen
       auto added = baseMarker(header, "completions", id, visualization_msgs::Marker::POINTS);
       for (const Eigen::Vector3f& p : segment.completion->points) added.points.push_back(toPoint(p));
       added.scale.x = added.scale.y = kCompletionPointSize;
-      added.color = lighterColorOf(s, 1.0f);
+      added.color = addedColorOf(s, 1.0f);
       if (!added.points.empty()) markers.markers.push_back(added);
-      markers.markers.push_back(boxMarker(header, "boxes", id, segment.completion->box, lighterColorOf(s, 0.25f)));
+      markers.markers.push_back(boxMarker(header, "boxes", id, segment.completion->box, addedColorOf(s, 0.25f)));
     } else if (segment.box) {
       markers.markers.push_back(boxMarker(header, "boxes", id, *segment.box, colorOf(s, 0.25f)));
     }

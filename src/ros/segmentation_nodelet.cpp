@@ -542,7 +542,15 @@ SegmentationNodelet::Outcome SegmentationNodelet::process(const sensor_msgs::Poi
     header.frame_id = frame;
     outcome.objects = objectsMessage(*scene.cloud, result, header);
     objects_publisher_.publish(outcome.objects);
-    if (tf_broadcaster_) tf_broadcaster_->sendTransform(objectFrames(outcome.objects));
+    if (tf_broadcaster_) {
+      // The same cloud segmented again (~segment on the cached cloud) would send frames with a
+      // stamp tf already has, which listeners warn about.
+      std::lock_guard<std::mutex> lock(frames_mutex_);
+      if (outcome.objects.header.stamp != last_frames_stamp_) {
+        tf_broadcaster_->sendTransform(objectFrames(outcome.objects));
+        last_frames_stamp_ = outcome.objects.header.stamp;
+      }
+    }
     if (labelled_publisher_.getNumSubscribers() > 0) {
       labelled_publisher_.publish(labelledCloudMessage(*scene.cloud, result, header));
     }

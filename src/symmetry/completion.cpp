@@ -23,24 +23,31 @@ namespace {
 constexpr float kMaxRadiusShare = 0.6f;
 constexpr float kHeightSlice = 0.02f;         // m
 constexpr float kMaxRadiusDeviation = 0.08f;  // median deviation from the slice's median radius, of the radius
+
+/// The same plane with a unit normal (planes from files or tests may come scaled).
+SymmetryPlane unitPlane(const SymmetryPlane& plane) {
+  const float length = plane.normal.norm();
+  if (!(length > 0.0f)) return plane;
+  return SymmetryPlane{plane.normal / length, plane.distance / length};
+}
 }  // namespace
 
 std::vector<Eigen::Vector3f> hiddenSideReflections(const SceneEvidence& evidence, const std::vector<int>& points,
                                                    const SymmetryPlane& plane,
-                                                   const std::optional<PlaneCoefficients>& table) {
+                                                   const std::function<bool(const Eigen::Vector3f&)>& hidden) {
   const Cloud& cloud = evidence.cloud();
-  std::vector<Eigen::Vector3f> hidden;
+  std::vector<Eigen::Vector3f> result;
   for (int index : points) {
     const Eigen::Vector3f position = cloud.points[index].getVector3fMap();
     if (!position.allFinite()) continue;
+    // The data term calls more than unobserved space "occluded" (the hidden side of a thin
+    // wall next to its visible side, free space just outside unobserved space, just under the
+    // table): for completion the reflection must be hidden as well.
     if (evidence.reflection(index, plane).landing != ReflectionLanding::Occluded) continue;
     const Eigen::Vector3f reflected = reflectPoint(plane, position);
-    // The data term forgives reflections just under the table (plane errors at the base); the
-    // table hides nothing of an object standing on it.
-    if (table && table->head<3>().dot(reflected) + (*table)[3] < 0.0f) continue;
-    hidden.push_back(reflected);
+    if (hidden(reflected)) result.push_back(reflected);
   }
-  return hidden;
+  return result;
 }
 
 std::vector<Eigen::Vector3f> revolvedHiddenPoints(const std::vector<Eigen::Vector3f>& points,
@@ -118,9 +125,10 @@ std::vector<Eigen::Vector3f> onePerCell(const std::vector<Eigen::Vector3f>& poin
   return result;
 }
 
-bool planeNearPoints(const Cloud& cloud, const std::vector<int>& points, const SymmetryPlane& plane,
+bool planeNearPoints(const Cloud& cloud, const std::vector<int>& points, const SymmetryPlane& given,
                      const std::optional<Eigen::Vector3f>& up) {
   if (points.empty()) return false;
+  const SymmetryPlane plane = unitPlane(given);
   Eigen::Vector3f centroid = Eigen::Vector3f::Zero();
   for (int index : points) centroid += cloud.points[index].getVector3fMap();
   centroid /= static_cast<float>(points.size());
@@ -162,9 +170,10 @@ ObjectBox completedBox(const std::vector<Eigen::Vector3f>& visible, const std::v
   return box;
 }
 
-Eigen::Isometry3f symmetryFrame(const Eigen::Vector3f& centroid, const SymmetryPlane& plane,
+Eigen::Isometry3f symmetryFrame(const Eigen::Vector3f& centroid, const SymmetryPlane& given,
                                 const std::optional<Eigen::Vector3f>& up) {
-  const Eigen::Vector3f x = plane.normal.normalized();
+  const SymmetryPlane plane = unitPlane(given);
+  const Eigen::Vector3f x = plane.normal;
   Eigen::Vector3f z = x.unitOrthogonal();
   if (up) {
     const Eigen::Vector3f vertical = *up - up->dot(x) * x;
@@ -184,8 +193,9 @@ void CompletionStage::run(PipelineState& state) const {
   std::optional<PlaneCoefficients> table;
   if (state.prepared.has_table) table = state.prepared.table_plane;
   const Cloud& cloud = *state.cloud;
-  // Unobserved space (not free) above the table with no observed point within a voxel.
-  const auto hidden = [&](const Eigen::Vector3f& q) {
+  // Unobserved space (not free) above the table (which hides nothing of an object standing on
+  // it) with no observed point within a voxel.
+  const std::function<bool(const Eigen::Vector3f&)> hidden = [&](const Eigen::Vector3f& q) {
     if (table && table->head<3>().dot(q) + (*table)[3] < 0.0f) return false;
     if (state.occupancy->classify(q) == Occupancy::Free) return false;
     std::vector<int> near;
@@ -198,7 +208,7 @@ void CompletionStage::run(PipelineState& state) const {
   for (CandidateSegment& segment : state.segments) {
     std::vector<Eigen::Vector3f> points;
     if (planeNearPoints(cloud, segment.points, segment.plane, state.up)) {
-      points = hiddenSideReflections(*state.evidence, segment.points, segment.plane, table);
+      points = hiddenSideReflections(*state.evidence, segment.points, segment.plane, hidden);
     }
     std::optional<Eigen::Vector3f> axis;
     if (state.up && params_.revolution_steps > 1) axis = revolutionAxis(cloud, segment.points, *state.up, axes_, min_axis_share_);

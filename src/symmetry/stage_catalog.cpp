@@ -181,6 +181,12 @@ std::vector<std::string> stageListProblems(const std::vector<std::string>& stage
       problem("'" + info->name + "' (position " + std::to_string(i + 1) + ") adds hypotheses no later 'cut' cuts");
     }
   }
+  // completion describes the final segments: a segment changed after it would keep a stale one.
+  const auto completion = std::find(stages.begin(), stages.end(), "completion");
+  if (completion != stages.end() && completion + 1 != stages.end()) {
+    problem("'completion' (position " + std::to_string(completion - stages.begin() + 1) +
+            ") describes the final segments: list it last");
+  }
   if (!made_so_far[P::Segments]) problem("no stage makes the segments to report (the list needs 'filter' after 'cut')");
   return problems;
 }

@@ -69,6 +69,10 @@ void printRow(const std::string& kind, std::size_t scenes, const std::vector<ss:
     chamfer_visible.push_back(1000.0 * score.chamfer_visible);
     chamfer_completed.push_back(1000.0 * score.chamfer_completed);
   }
+  if (scores.empty()) {  // no object to take a median of: no figure, not a perfect one
+    std::printf("%-12s %6zu %7zu | %7s %9s | %8s %10s\n", kind.c_str(), scenes, scores.size(), "-", "-", "-", "-");
+    return;
+  }
   std::printf("%-12s %6zu %7zu | %7.3f %9.3f | %8.1f %10.1f\n", kind.c_str(), scenes, scores.size(), median(iou_visible),
               median(iou_completed), median(chamfer_visible), median(chamfer_completed));
 }
@@ -81,6 +85,10 @@ int main(int argc, char** argv) {
   try {
     const ss::SegmentationConfig config =
         options.config.empty() ? ss::SegmentationConfig{} : ss::loadConfigFile(options.config);
+    const auto& stages = config.symmetry.stages;
+    if (std::find(stages.begin(), stages.end(), "completion") == stages.end()) {
+      throw ss::InputError(options.config, "symmetry.stages has no 'completion': nothing to evaluate");
+    }
     const auto segmenter = ss::makeSegmenter("symmetry", config);
     std::map<std::string, std::vector<ss::CompletionScore>> by_kind;
     std::map<std::string, std::size_t> scenes_by_kind;

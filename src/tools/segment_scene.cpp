@@ -174,14 +174,7 @@ int main(int argc, char** argv) {
       if (completed) {
         // Each object's added points in a lighter shade of its colour.
         pcl::PointCloud<pcl::PointXYZRGB> with_added = colored;
-        const auto objects = ss::completedObjects(*scene.cloud, result.segments);
-        std::size_t next = 0;
-        for (const auto& segment : result.segments) {
-          next += segment.indices.size();
-          const std::size_t added = segment.completion ? segment.completion->points.size() : 0;
-          for (std::size_t k = 0; k < added; ++k) with_added.push_back(objects.points[next + k]);
-          next += added;
-        }
+        with_added += ss::addedPoints(result.segments);
         // Seen from the far side, where the added points are: the sensor's view turned half
         // a turn about the table's up (else the picture's) through its target.
         ss::View far_side = ss::defaultView(scene, result.segments);

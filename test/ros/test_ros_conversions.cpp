@@ -503,8 +503,9 @@ TEST(MarkerConversion, CompletedObjectsShowTheirAddedPointsAndBox) {
   EXPECT_EQ(added->id, 1);
   ASSERT_EQ(added->points.size(), 2u);
   EXPECT_NEAR(added->points[1].x, 1.2, 1e-6);
-  const Eigen::Vector3f segment_color = ss::segmentColor(0).cast<float>() / 255.0f;
-  EXPECT_NEAR(added->color.r, 0.5f * (segment_color.x() + 1.0f), 1e-6);  // lighter than the object
+  EXPECT_NEAR(added->color.r, ss::addedPointColor(0).x() / 255.0f, 1e-6);  // as segments_completed.ply
+  EXPECT_GT(added->color.r + added->color.g + added->color.b,
+            (ss::segmentColor(0).sum()) / 255.0f);  // lighter than the object
   const auto box = find("boxes");
   ASSERT_NE(box, markers.markers.end());
   EXPECT_EQ(box->type, visualization_msgs::Marker::CUBE);

@@ -138,6 +138,8 @@ class SegmentationNodelet : public nodelet_topic_tools::NodeletLazy {
   std::unique_ptr<tf2_ros::Buffer> tf_buffer_;
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
   std::unique_ptr<tf2_ros::TransformBroadcaster> tf_broadcaster_;  ///< With ~publish_object_frames only.
+  std::mutex frames_mutex_;
+  ros::Time last_frames_stamp_;  ///< Stamp of the object frames sent last (guarded by frames_mutex_).
   // ~input: guarded by NodeletLazy's connection_mutex_.
   ros::Subscriber cloud_subscriber_;
   std::atomic<int> latest_waiters_{0};  // ~segment calls waiting for a cloud on ~input

@@ -25,12 +25,13 @@
 
 namespace symmetry_segmentation {
 
-/// The reflections about `plane` of the working-cloud `points` that land in unobserved space
-/// above `table` (when given): evidence.reflection() says Occluded and the reflection is not
-/// below the table's top.
+/// The reflections about `plane` of the working-cloud `points` that land where no view looked:
+/// evidence.reflection() says Occluded (on no observed point, not in free space) and `hidden`
+/// accepts the reflection (the stage: not free, no observed point within a voxel, not under the
+/// table).
 std::vector<Eigen::Vector3f> hiddenSideReflections(const SceneEvidence& evidence, const std::vector<int>& points,
                                                    const SymmetryPlane& plane,
-                                                   const std::optional<PlaneCoefficients>& table);
+                                                   const std::function<bool(const Eigen::Vector3f&)>& hidden);
 
 /// Whether `plane` passes within half the largest extent (segmentExtents) of the centroid of
 /// `points` (indices into `cloud`). A flat object is mirror-symmetric about any plane across it,
