@@ -12,6 +12,16 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 
 POINTS = [(0.1, 0.2, 0.9), (-0.3, 0.05, 1.1), (0.25, -0.4, 0.8)]
 
+# segments.json as segment_scene writes it: support, planes, scores, boxes, a completion.
+SEGMENTS_JSON = """{"input_points": 10,
+ "support": {"plane":[0.0,0.0,1.0,-0.7],"polygon":[[0.1,0.2,0.7],[0.9,0.2,0.7],[0.5,0.8,0.7]]},
+ "segments": [
+  {"indices":[0,3,9],"symmetry":{"normal":[0.0,1.0,0.0],"distance":-0.12},"scores":{"occlusion":0.98,"smoothness":0.01},"box":{"center":[0.42,0.31,0.76],"axes":[[0.8,0.6,0.0],[-0.6,0.8,0.0],[0.0,0.0,1.0]],"size":[0.2,0.1,0.12]},"completion":{"points":4,"box":{"center":[0.4,0.3,0.76],"axes":[[0.8,0.6,0.0],[-0.6,0.8,0.0],[0.0,0.0,1.0]],"size":[0.2,0.14,0.12]},"frame":{"position":[0.4,0.3,0.7],"orientation":[0.0,0.0,0.0,1.0]}}},
+  {"indices":[1,2]}],
+ "timing_ms": {"load":1.5,"total":40.1},
+ "counts": {"segments":2}}
+"""
+
 
 def write(target, name, data):
     directory = os.path.join(HERE, "corpus", target)
@@ -167,6 +177,8 @@ def side_file_seeds():
     write("scene_info", "full", "kind: cluttered\nseed: 42\nsensor_origins:\n  - [0, 0, 1.2]\n  - [0.5, -0.5, 1]\n")
     write("scene_info", "kind_only", "kind: stacked-boxes_2\n")
     write("scene_info", "up", "kind: clutter\nup: [0, -0.8, -0.6]\nsensor_origins:\n  - [0, 0, 0]\n")
+    write("segments_json", "with_box", SEGMENTS_JSON)
+    write("segments_json", "plain", '{"input_points": 3, "segments": [{"indices": [0, 2]}], "timing_ms": {"total": 1}}\n')
 
 
 if __name__ == "__main__":
