@@ -161,10 +161,16 @@ TEST(SegmentationTopics, GeneratedSceneIsSegmentedLikeTheCoreDoes) {
   for (const auto& p : labelled_points) labels.insert(p.label);
   EXPECT_EQ(labels.size(), objects->objects.size() + 1);  // + 0 for unsegmented points
 
-  // Markers: DELETEALL first, then plane, arrow and text per object, the table's outline (the
-  // table is estimated here), the object list last.
+  // Markers: DELETEALL first, then per object plane, arrow, its completion's added points (when
+  // it added any), its box and text, the table's outline (the table is estimated here), the
+  // object list last.
   EXPECT_EQ(markers->markers.front().action, visualization_msgs::Marker::DELETEALL);
-  EXPECT_EQ(markers->markers.size(), 1 + 3 * objects->objects.size() + 1 + 1);
+  std::size_t per_object = 0;
+  for (const auto& object : objects->objects) {
+    EXPECT_TRUE(object.has_completion);
+    per_object += 4 + (object.completion_points > 0 ? 1 : 0);
+  }
+  EXPECT_EQ(markers->markers.size(), 1 + per_object + 1 + 1);
   ASSERT_GE(markers->markers.size(), 2u);
   EXPECT_EQ(markers->markers[markers->markers.size() - 2].ns, "support");
   EXPECT_EQ(markers->markers.back().ns, "object_list");
