@@ -13,7 +13,9 @@
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <pcl_msgs/ModelCoefficients.h>
 #include <ros/master.h>
+#include <tf2_ros/buffer.h>
 #include <tf2_ros/static_transform_broadcaster.h>
+#include <tf2_ros/transform_listener.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include "ros_test_support.h"
@@ -108,6 +110,8 @@ TEST(SegmentationTopics, GeneratedSceneIsSegmentedLikeTheCoreDoes) {
   sensor_msgs::PointCloud2::ConstPtr labelled;
   visualization_msgs::MarkerArray::ConstPtr markers;
   ros::Time stamp(1000, 0);
+  tf2_ros::Buffer tf_buffer;  // listening before the cloud goes out: /tf is not latched
+  tf2_ros::TransformListener tf_listener(tf_buffer);
   auto objects_sub = nh.subscribe<ss::SegmentedObjectArray>(
       "segmentation/objects", 1, [&](const ss::SegmentedObjectArray::ConstPtr& m) { if (m->header.stamp == stamp) objects = m; });
   auto labelled_sub = nh.subscribe<sensor_msgs::PointCloud2>(
@@ -171,6 +175,15 @@ TEST(SegmentationTopics, GeneratedSceneIsSegmentedLikeTheCoreDoes) {
     per_object += 4 + (object.completion_points > 0 ? 1 : 0);
   }
   EXPECT_EQ(markers->markers.size(), 1 + per_object + 1 + 1);
+
+  // ~publish_object_frames: a tf frame per object, at the cloud's stamp, at its symmetry frame.
+  for (const auto& object : objects->objects) {
+    const std::string child = "object_" + std::to_string(object.id);
+    ASSERT_TRUE(ros_test::spinUntil([&] { return tf_buffer.canTransform("map", child, stamp); }, 10)) << child;
+    const auto frame = tf_buffer.lookupTransform("map", child, stamp);
+    EXPECT_NEAR(frame.transform.translation.x, object.symmetry_frame.position.x, 1e-6) << child;
+    EXPECT_NEAR(frame.transform.rotation.w, object.symmetry_frame.orientation.w, 1e-6) << child;
+  }
   ASSERT_GE(markers->markers.size(), 2u);
   EXPECT_EQ(markers->markers[markers->markers.size() - 2].ns, "support");
   EXPECT_EQ(markers->markers.back().ns, "object_list");
