@@ -28,6 +28,9 @@ ObjectBox objectBox(const Cloud& cloud, const std::vector<int>& indices, const s
 /// boxes from files.
 std::string boxProblem(const ObjectBox& box);
 
+/// The unit normal of `result`'s support (pointing up), if it has one.
+std::optional<Eigen::Vector3f> supportUp(const SegmentationResult& result);
+
 /// The up direction boxes use for `result` of `scene`: the support's normal, else the scene's up.
 std::optional<Eigen::Vector3f> boxUp(const Scene& scene, const SegmentationResult& result);
 

@@ -186,8 +186,13 @@ std::string boxProblem(const ObjectBox& box) {
   return "";
 }
 
-std::optional<Eigen::Vector3f> boxUp(const Scene& scene, const SegmentationResult& result) {
+std::optional<Eigen::Vector3f> supportUp(const SegmentationResult& result) {
   if (result.support && result.support->plane.head<3>().norm() > 0.0f) return result.support->plane.head<3>().normalized();
+  return std::nullopt;
+}
+
+std::optional<Eigen::Vector3f> boxUp(const Scene& scene, const SegmentationResult& result) {
+  if (const auto up = supportUp(result)) return up;
   return scene.up;
 }
 

@@ -29,8 +29,7 @@ geometry_msgs::Point toPoint(const Eigen::Vector3f& v) {
   return p;
 }
 
-std_msgs::ColorRGBA colorOf(std::size_t segment, float alpha) {
-  const Eigen::Vector3i rgb = segmentColor(segment);
+std_msgs::ColorRGBA rgba(const Eigen::Vector3i& rgb, float alpha) {
   std_msgs::ColorRGBA color;
   color.r = rgb.x() / 255.0f;
   color.g = rgb.y() / 255.0f;
@@ -50,16 +49,10 @@ visualization_msgs::Marker baseMarker(const std_msgs::Header& header, const std:
   return marker;
 }
 
+std_msgs::ColorRGBA colorOf(std::size_t segment, float alpha) { return rgba(segmentColor(segment), alpha); }
+
 /// What completion added to `segment`, in the colour segments_completed.ply has it.
-std_msgs::ColorRGBA addedColorOf(std::size_t segment, float alpha) {
-  const Eigen::Vector3i rgb = addedPointColor(segment);
-  std_msgs::ColorRGBA color;
-  color.r = rgb.x() / 255.0f;
-  color.g = rgb.y() / 255.0f;
-  color.b = rgb.z() / 255.0f;
-  color.a = alpha;
-  return color;
-}
+std_msgs::ColorRGBA addedColorOf(std::size_t segment, float alpha) { return rgba(addedPointColor(segment), alpha); }
 
 visualization_msgs::Marker boxMarker(const std_msgs::Header& header, const std::string& ns, int id,
                                      const ObjectBox& box, const std_msgs::ColorRGBA& color) {

@@ -42,8 +42,7 @@ SegmentedObjectArray objectsMessage(const Cloud& cloud, const SegmentationResult
   SegmentedObjectArray message;
   message.header = header;
   message.objects.reserve(result.segments.size());
-  std::optional<Eigen::Vector3f> up;
-  if (result.support && result.support->plane.head<3>().norm() > 0.0f) up = result.support->plane.head<3>().normalized();
+  const std::optional<Eigen::Vector3f> up = supportUp(result);
   for (std::size_t i = 0; i < result.segments.size(); ++i) {
     const Segment& segment = result.segments[i];
     SegmentedObject object;

@@ -17,6 +17,7 @@
 #include "symmetry_segmentation/scene_io.h"
 #include "symmetry_segmentation/segmentation_output.h"
 #include "symmetry_segmentation/segmenter.h"
+#include "symmetry_segmentation/object_box.h"
 #include "symmetry_segmentation/segments_json.h"
 #include "symmetry_segmentation/stopwatch.h"
 
@@ -178,8 +179,7 @@ int main(int argc, char** argv) {
         // Seen from the far side, where the added points are: the sensor's view turned half
         // a turn about the table's up (else the picture's) through its target.
         ss::View far_side = ss::defaultView(scene, result.segments);
-        const Eigen::Vector3f up =
-            result.support ? Eigen::Vector3f(result.support->plane.head<3>().normalized()) : far_side.up.normalized();
+        const Eigen::Vector3f up = ss::supportUp(result).value_or(far_side.up.normalized());
         const Eigen::Vector3f offset = far_side.eye - far_side.target;
         const Eigen::Vector3f along_up = offset.dot(up) * up;
         far_side.eye = far_side.target + along_up - (offset - along_up);
