@@ -325,11 +325,12 @@ TEST(EvaluateCompletion, ReportsScenesWithWholeShapesAndRejectsOthers) {
   ASSERT_EQ(made.exit_code, 0) << made.output;
   ASSERT_TRUE(fs::exists(dir + "/isolated_4/objects.yaml"));
   ASSERT_TRUE(fs::exists(dir + "/isolated_4/objects_surface.ply"));
-  const auto result = runCommand(toolPath("evaluate_completion") + " " + dir);
+  const auto result = runCommand(toolPath("evaluate_completion") + " " + dir + " --csv " + dir + "/objects.csv");
   ASSERT_EQ(result.exit_code, 0) << result.output;
   std::istringstream lines(result.output);
   std::string line;
   bool overall = false;
+  int overall_objects = 0;
   while (std::getline(lines, line)) {
     if (line.rfind("overall", 0) != 0) continue;
     overall = true;
@@ -340,10 +341,30 @@ TEST(EvaluateCompletion, ReportsScenesWithWholeShapesAndRejectsOthers) {
     row >> name >> scenes >> objects >> bar >> iou_visible >> iou_completed;
     EXPECT_EQ(scenes, 1);
     EXPECT_GE(objects, 3);  // 3-5 objects well apart, most found
+    overall_objects = objects;
     EXPECT_GT(iou_visible, 0.5);
     EXPECT_GT(iou_completed, 0.5);
   }
   EXPECT_TRUE(overall) << result.output;
+  // One CSV row per scored object, naming its scene and shape, its figures in range.
+  std::ifstream csv(dir + "/objects.csv");
+  std::string header;
+  ASSERT_TRUE(std::getline(csv, header));
+  EXPECT_EQ(header.rfind("scene,kind,label,shape,segment_iou,", 0), 0u) << header;
+  int rows = 0;
+  while (std::getline(csv, line)) {
+    ++rows;
+    std::vector<std::string> fields;
+    std::istringstream row(line);
+    for (std::string field; std::getline(row, field, ',');) fields.push_back(field);
+    ASSERT_EQ(fields.size(), 10u) << line;
+    EXPECT_EQ(fields[0], "isolated_4");
+    EXPECT_EQ(fields[1], "isolated");
+    EXPECT_FALSE(fields[3].empty()) << line;
+    EXPECT_GT(std::stod(fields[4]), 0.5) << line;
+    EXPECT_LE(std::stod(fields[6]), 1.0) << line;
+  }
+  EXPECT_EQ(rows, overall_objects);
 
   writeScene(dir + "/labelled_only", twoBoxesOnTable(), "");
   const auto none = runCommand(toolPath("evaluate_completion") + " " + dir + "/labelled_only");

@@ -94,7 +94,8 @@ std::vector<TrueShape> loadTrueShapes(const std::string& scene_dir) {
       TrueShape shape;
       shape.label = object["label"].as<int>();
       static const std::set<std::string> round = {"cylinder", "bottle", "bowl", "ball", "cone", "pot"};
-      shape.round = object["shape"] && round.count(object["shape"].as<std::string>()) > 0;
+      if (object["shape"]) shape.shape = object["shape"].as<std::string>();
+      shape.round = round.count(shape.shape) > 0;
       if (shape.label <= 0 || by_label.count(shape.label)) throw InputError(yaml_path, "labels must be positive and distinct");
       const YAML::Node box = object["box"];
       if (!box || !box.IsMap()) throw InputError(yaml_path, "each object needs a 'box'");
@@ -176,6 +177,8 @@ std::vector<CompletionScore> scoreCompletion(const Scene& scene, const Segmentat
     completed.insert(completed.end(), best->completion->points.begin(), best->completion->points.end());
     CompletionScore score;
     score.label = shape.label;
+    score.shape = shape.shape;
+    score.added_points = best->completion->points.size();
     score.segment_iou = best_iou;
     score.box_iou_visible = boxIoU(*best->box, trueBoxFacing(shape, *best->box));
     score.box_iou_completed = boxIoU(best->completion->box, trueBoxFacing(shape, best->completion->box));

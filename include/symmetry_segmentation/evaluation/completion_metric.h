@@ -4,6 +4,7 @@
 // surface, against the same figures for the visible points alone. Ground truth comes from
 // make_scene (objects.yaml, objects_surface.ply; synthetic/object_shapes.h).
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@ namespace symmetry_segmentation {
 /// One object's whole shape (scene frame).
 struct TrueShape {
   int label = 0;
+  std::string shape;  ///< make_scene's shape name (box, cylinder, ...); empty when not given.
   ObjectBox box;
   /// A solid of revolution about its box's z (cylinder, bottle, bowl, ball, cone, pot): any turn
   /// of its box about z is as true, and it is turned to the box it is compared with.
@@ -39,6 +41,8 @@ double chamferDistance(const std::vector<Eigen::Vector3f>& a, const std::vector<
 /// One correctly segmented object (best segment IoU > 0.5 over labelled points).
 struct CompletionScore {
   int label = 0;
+  std::string shape;
+  std::size_t added_points = 0;  ///< Points the completion added.
   double segment_iou = 0.0;
   double box_iou_visible = 0.0;    ///< The segment's box (visible points).
   double box_iou_completed = 0.0;  ///< The completion's box.
