@@ -69,6 +69,17 @@ TEST(Completion, TheCompletedBoxTrimsStrayReflectionsButKeepsTheHiddenSide) {
   EXPECT_TRUE(box.center.isApprox(Eigen::Vector3f(0.05f, 0.03f, 0.04f), 1e-3f)) << box.center.transpose();
   const ss::ObjectBox untrimmed = ss::completedBox(visible, added, Eigen::Vector3f::UnitZ(), 0.0f);
   EXPECT_NEAR(untrimmed.size.y(), 0.12f, 1e-3f);
+  // Added points passing a visible side by less than a working voxel restate it; by more, they
+  // move it.
+  std::vector<Eigen::Vector3f> just_past = added, well_past = added;
+  for (float z = 0.0f; z <= 0.0801f; z += 0.005f) {
+    for (float y = 0.03f; y <= 0.0601f; y += 0.005f) {
+      just_past.emplace_back(0.106f, y, z);
+      well_past.emplace_back(0.13f, y, z);
+    }
+  }
+  EXPECT_NEAR(ss::completedBox(visible, just_past, Eigen::Vector3f::UnitZ()).size.x(), 0.1f, 1e-3f);
+  EXPECT_NEAR(ss::completedBox(visible, well_past, Eigen::Vector3f::UnitZ()).size.x(), 0.13f, 1e-3f);
 }
 
 TEST(Completion, TheSymmetryFrameSitsOnThePlaneWithZUp) {

@@ -18,12 +18,11 @@ ss::PointT point(const Eigen::Vector3f& p) {
 }
 
 /// The surface of a box with edges `size` along the columns of `frame`, centred on `center`,
-/// sampled every 5 mm, never its bottom; `with_top` false leaves its top (+z face) out, `all_sides`
+/// sampled every `step` (5 mm by default), never its bottom; `with_top` false leaves its top (+z face) out, `all_sides`
 /// false keeps only the -x and -y faces (a box seen from one corner).
 ss::Cloud boxSurface(const Eigen::Vector3f& center, const Eigen::Matrix3f& frame, const Eigen::Vector3f& size,
-                     bool with_top, bool all_sides) {
+                     bool with_top, bool all_sides, float step = 0.005f) {
   ss::Cloud cloud;
-  const float step = 0.005f;
   const Eigen::Vector3f half = 0.5f * size;
   auto add = [&](const Eigen::Vector3f& local) { cloud.push_back(point(center + frame * local)); };
   for (float a = -half.x(); a <= half.x() + 1e-6f; a += step) {
@@ -120,6 +119,27 @@ TEST(ObjectBox, UnusablePointsAndBadIndicesAreLeftOut) {
   const ss::ObjectBox empty = ss::objectBox(cloud, {2}, Eigen::Vector3f::UnitZ());
   EXPECT_EQ(empty.size, Eigen::Vector3f::Zero());
   EXPECT_EQ(empty.axes, Eigen::Matrix3f::Identity());
+}
+
+// A depth camera's stray pixels - mixed depths along an object's outline, in a thin streak
+// behind it - must neither stretch the box nor turn its footprint.
+TEST(ObjectBox, StrayPointsDoNotStretchTheBox) {
+  const Eigen::Vector3f size(0.2f, 0.1f, 0.1f);
+  ss::Cloud cloud = boxSurface({0, 0, 0.05f}, Eigen::Matrix3f::Identity(), size, true, true, 0.002f);
+  const ss::ObjectBox clean = ss::objectBox(cloud, allIndices(cloud), Eigen::Vector3f::UnitZ());
+  for (float t = 0.0f; t < 0.12f; t += 0.004f) cloud.push_back(point({0.1f + t, 0.03f + 0.5f * t, 0.08f}));
+  const ss::ObjectBox box = ss::objectBox(cloud, allIndices(cloud), Eigen::Vector3f::UnitZ());
+  EXPECT_TRUE(parallel(box.axes.col(0), Eigen::Vector3f::UnitX())) << box.axes;
+  // Within a cell (1 cm) of the clean box: a stray point sharing a cell with the surface stays.
+  EXPECT_NEAR(box.size.x(), size.x(), 0.01f);
+  EXPECT_NEAR(box.size.y(), size.y(), 0.01f);
+  EXPECT_NEAR(box.size.z(), size.z(), 0.01f);
+  EXPECT_LT((box.center - clean.center).norm(), 0.01f) << box.center.transpose();
+  // A sparse cloud (every cell about as sparse as the streak) keeps all of its points.
+  ss::Cloud sparse = boxSurface({0, 0, 0.05f}, Eigen::Matrix3f::Identity(), size, true, true, 0.01f);
+  sparse.push_back(point({0.2f, 0.0f, 0.05f}));
+  const ss::ObjectBox kept = ss::objectBox(sparse, allIndices(sparse), Eigen::Vector3f::UnitZ());
+  EXPECT_NEAR(kept.size.x(), 0.3f, 0.005f);
 }
 
 TEST(ObjectBox, AddObjectBoxesTakesTheSupportsUpElseTheScenes) {

@@ -14,7 +14,8 @@
 
 namespace symmetry_segmentation {
 
-/// The box around the usable points `indices` selects from `cloud`, in the cloud's frame.
+/// The box around the usable points `indices` selects from `cloud`, in the cloud's frame, leaving
+/// out stray points (those in 1 cm cells holding under a fifth of the typical point's cell count).
 /// With `up` (unit, the support's normal or gravity's opposite): z = up, x and y the sides of a
 /// rectangle around the footprint (the points projected along up) - of those within 15 % of the
 /// smallest area, the one whose sides most points lie on -, x the longer;

@@ -63,7 +63,8 @@ std::vector<int> revolutionSurface(const Cloud& cloud, const std::vector<int>& p
 std::vector<Eigen::Vector3f> onePerCell(const std::vector<Eigen::Vector3f>& points, float cell);
 
 /// The box of the completed object: turned as objectBox turns the visible points, bounded by
-/// every visible point and by the added points less the `trim` share at either end of each axis
+/// the visible box (objectBox: without stray points) and, where they pass it by more than a
+/// working voxel (1 cm), by the added points less the `trim` share at either end of each axis
 /// (a plane a few millimetres off throws its far reflections past the hidden side; the hidden
 /// side itself is many points at one depth and stays).
 ObjectBox completedBox(const std::vector<Eigen::Vector3f>& visible, const std::vector<Eigen::Vector3f>& added,
