@@ -40,6 +40,14 @@ TEST(Config, PresetsSetTheFilterThresholds) {
   EXPECT_EQ(paper.symmetry.stages,
             (std::vector<std::string>{"curves", "curve_pairs", "cut", "refine", "filter", "dedup", "object_bottoms"}));
   EXPECT_TRUE(ss::stageListProblems(paper.symmetry.stages).empty());
+  // The paper's stages with rotational symmetry (upright axes, no face planes), as the authors'
+  // implementation runs them.
+  const auto rotational = ss::loadConfigFile(test_support::sourceDir() + "/config/paper_rotational.yaml");
+  EXPECT_EQ(rotational.symmetry.stages, (std::vector<std::string>{"curves", "curve_pairs", "upright", "cut", "refine",
+                                                                  "filter", "dedup", "object_bottoms"}));
+  EXPECT_EQ(rotational.symmetry.upright.flat_curvature, 0.0f);
+  EXPECT_EQ(rotational.symmetry.cut.unobserved_steps, paper.symmetry.cut.unobserved_steps);
+  EXPECT_TRUE(ss::stageListProblems(rotational.symmetry.stages).empty());
   ss::SegmentationConfig config;
   ss::setConfigValue(config, "symmetry.filter.s_occl", "0.5");
   EXPECT_FLOAT_EQ(config.symmetry.filter.s_occl, 0.5f);

@@ -331,7 +331,7 @@ std::vector<SymmetryHypothesis> uprightHypotheses(const SceneEvidence& evidence,
     const float curvature = pca.eigenvalues()(0) / std::max(1e-12f, pca.eigenvalues().sum());
     const Eigen::Vector3f face_normal = pca.eigenvectors().col(0);
 
-      // A narrow strip of a curved surface looks flat to PCA; it proposes both kinds of plane
+    // A narrow strip of a curved surface looks flat to PCA; it proposes both kinds of plane
     // (the bisector of its chord passes through the axis as well).
     if (curvature < params.flat_curvature) {
       const float tilt = std::fabs(face_normal.dot(up));
