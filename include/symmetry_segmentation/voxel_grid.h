@@ -2,11 +2,22 @@
 // Voxel-grid downsampling that remembers which input points each voxel stands for
 // (pcl::VoxelGrid does not), so results can always be reported on the input cloud.
 
+#include <array>
+#include <cmath>
+#include <cstdint>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "symmetry_segmentation/scene.h"
 
 namespace symmetry_segmentation {
+
+/// The grid cell of side `leaf` holding finite `p`.
+inline std::array<std::int64_t, 3> voxelKey(const Eigen::Vector3f& p, float leaf) {
+  return {static_cast<std::int64_t>(std::floor(p.x() / leaf)), static_cast<std::int64_t>(std::floor(p.y() / leaf)),
+          static_cast<std::int64_t>(std::floor(p.z() / leaf))};
+}
 
 struct VoxelGridResult {
   Cloud::Ptr cloud;                         ///< One centroid per occupied voxel.

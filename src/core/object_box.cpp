@@ -10,6 +10,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "symmetry_segmentation/point_validity.h"
+#include "symmetry_segmentation/voxel_grid.h"
 
 namespace symmetry_segmentation {
 namespace {
@@ -35,14 +36,12 @@ constexpr double kSparseCellShare = 0.2;   // of the points' typical cell count
 /// 0.78 (RealSense 0.47 to 0.65), fused scenes 0.90 to 0.91.
 std::vector<Eigen::Vector3f> withoutSparseCells(const std::vector<Eigen::Vector3f>& points) {
   if (points.empty()) return points;
-  std::map<std::array<long, 3>, int> counts;
-  std::vector<std::array<long, 3>> cells;
+  std::map<std::array<std::int64_t, 3>, int> counts;
+  std::vector<std::array<std::int64_t, 3>> cells;
   cells.reserve(points.size());
   for (const auto& p : points) {
-    const std::array<long, 3> cell = {std::lround(std::floor(p.x() / kDensityCell)), std::lround(std::floor(p.y() / kDensityCell)),
-                                      std::lround(std::floor(p.z() / kDensityCell))};
-    cells.push_back(cell);
-    ++counts[cell];
+    cells.push_back(voxelKey(p, kDensityCell));
+    ++counts[cells.back()];
   }
   std::vector<int> per_point;
   per_point.reserve(points.size());

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <map>
 #include <set>
-#include <tuple>
 #include <limits>
 
 #include "symmetry_segmentation/occupancy.h"
@@ -16,6 +15,7 @@
 #include "symmetry_segmentation/symmetry/symmetric_graph_cut.h"
 #include "symmetry_segmentation/symmetry/upright_hypotheses.h"
 #include "symmetry_segmentation/symmetry/symmetry_plane.h"
+#include "symmetry_segmentation/voxel_grid.h"
 
 namespace symmetry_segmentation {
 namespace {
@@ -116,12 +116,10 @@ std::vector<int> revolutionSurface(const Cloud& cloud, const std::vector<int>& p
 }
 
 std::vector<Eigen::Vector3f> onePerCell(const std::vector<Eigen::Vector3f>& points, float cell) {
-  std::set<std::tuple<long, long, long>> taken;
+  std::set<std::array<std::int64_t, 3>> taken;
   std::vector<Eigen::Vector3f> result;
   for (const Eigen::Vector3f& p : points) {
-    const auto key = std::make_tuple(std::lround(std::floor(p.x() / cell)), std::lround(std::floor(p.y() / cell)),
-                                     std::lround(std::floor(p.z() / cell)));
-    if (taken.insert(key).second) result.push_back(p);
+    if (taken.insert(voxelKey(p, cell)).second) result.push_back(p);
   }
   return result;
 }
