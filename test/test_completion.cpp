@@ -1,6 +1,7 @@
 // Stage completion: the unseen side from the symmetry plane, the completed box, the symmetry frame.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "fake_evidence.h"
@@ -167,4 +168,41 @@ TEST(Completion, APlaneFarBesideAFlatObjectCompletesNothing) {
   ss::SymmetryPlane beside = through;
   beside.distance = -0.38f;  // x = 0.38, 12 cm past its edge
   EXPECT_FALSE(ss::planeNearPoints(cloud, book, beside, Eigen::Vector3f::UnitZ()));
+}
+
+TEST(Completion, StrayVoxelsOffTheSurfaceAreNotReflected) {
+  // A box's front face at the working voxel (1 cm), a line of voxels off its top and three
+  // stray voxels of mixed pixels 5-15 cm behind it, apart from each other.
+  ss::Cloud cloud;
+  std::vector<int> face, edge, strays, all;
+  for (float x = 0.0f; x <= 0.1001f; x += 0.01f) {
+    for (float z = 0.0f; z <= 0.0801f; z += 0.01f) {
+      face.push_back(static_cast<int>(cloud.size()));
+      cloud.push_back(at(x, 0.0f, z));
+    }
+  }
+  for (float y = 0.01f; y <= 0.0601f; y += 0.01f) {
+    edge.push_back(static_cast<int>(cloud.size()));
+    cloud.push_back(at(0.05f, y, 0.08f));
+  }
+  for (int k = 0; k < 3; ++k) {
+    strays.push_back(static_cast<int>(cloud.size()));
+    cloud.push_back(at(0.02f + 0.04f * static_cast<float>(k), 0.05f + 0.05f * static_cast<float>(k), 0.04f));
+  }
+  all = face;
+  all.insert(all.end(), edge.begin(), edge.end());
+  all.insert(all.end(), strays.begin(), strays.end());
+  pcl::KdTreeFLANN<ss::PointT> tree;
+  tree.setInputCloud(cloud.makeShared());
+  // Two voxels, and a hair more: the grid's float steps put some neighbours at 2.00001 cm.
+  const std::vector<int> surface = ss::surfacePoints(cloud, tree, all, 0.021f, 3);
+  for (int i : face) EXPECT_TRUE(std::count(surface.begin(), surface.end(), i)) << "face point " << i;
+  // A line of voxels (a rim, a handle) is a surface too, all but its free end (2 neighbours).
+  for (std::size_t k = 0; k + 1 < edge.size(); ++k) {
+    EXPECT_TRUE(std::count(surface.begin(), surface.end(), edge[k])) << "edge point " << edge[k];
+  }
+  for (int i : strays) EXPECT_FALSE(std::count(surface.begin(), surface.end(), i)) << "stray point " << i;
+  // Only the segment's own points count: the face alone, without the points around it, is no
+  // surface of a segment that holds one of its points.
+  EXPECT_TRUE(ss::surfacePoints(cloud, tree, {face.front()}, 0.021f, 3).empty());
 }

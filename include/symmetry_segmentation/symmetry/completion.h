@@ -15,6 +15,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <pcl/kdtree/kdtree_flann.h>
 
 #include "symmetry_segmentation/object_box.h"
 #include "symmetry_segmentation/scene.h"
@@ -32,6 +33,12 @@ namespace symmetry_segmentation {
 std::vector<Eigen::Vector3f> hiddenSideReflections(const SceneEvidence& evidence, const std::vector<int>& points,
                                                    const SymmetryPlane& plane,
                                                    const std::function<bool(const Eigen::Vector3f&)>& hidden);
+
+/// The working-cloud `points` with at least `min_neighbours` others of `points` within `radius`
+/// (`tree` indexes `cloud`): the object's surface, without the stray voxels a depth camera's mixed
+/// pixels leave along its outline, centimetres off it, which the box leaves out as well.
+std::vector<int> surfacePoints(const Cloud& cloud, const pcl::KdTreeFLANN<PointT>& tree, const std::vector<int>& points,
+                               float radius, int min_neighbours);
 
 /// Whether `plane` passes within half the largest extent (segmentExtents) of the centroid of
 /// `points` (indices into `cloud`). A flat object is mirror-symmetric about any plane across it,
