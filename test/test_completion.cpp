@@ -172,7 +172,7 @@ TEST(Completion, APlaneFarBesideAFlatObjectCompletesNothing) {
 
 TEST(Completion, StrayVoxelsOffTheSurfaceAreNotReflected) {
   // A box's front face at the working voxel (1 cm), a line of voxels off its top and three
-  // stray voxels of mixed pixels 5-15 cm behind it, apart from each other.
+  // stray voxels of mixed pixels 5-15 cm behind it, 6 cm apart.
   ss::Cloud cloud;
   std::vector<int> face, edge, strays, all;
   for (float x = 0.0f; x <= 0.1001f; x += 0.01f) {
@@ -194,8 +194,8 @@ TEST(Completion, StrayVoxelsOffTheSurfaceAreNotReflected) {
   all.insert(all.end(), strays.begin(), strays.end());
   pcl::KdTreeFLANN<ss::PointT> tree;
   tree.setInputCloud(cloud.makeShared());
-  // Two voxels, and a hair more: the grid's float steps put some neighbours at 2.00001 cm.
-  const std::vector<int> surface = ss::surfacePoints(cloud, tree, all, 0.021f, 3);
+  const float radius = ss::kSurfaceRadiusVoxels * 0.01f;  // the stage's, at the 1 cm working voxel
+  const std::vector<int> surface = ss::surfacePoints(cloud, tree, all, radius, ss::kMinSurfaceNeighbours);
   for (int i : face) EXPECT_TRUE(std::count(surface.begin(), surface.end(), i)) << "face point " << i;
   // A line of voxels (a rim, a handle) is a surface too, all but its free end (2 neighbours).
   for (std::size_t k = 0; k + 1 < edge.size(); ++k) {
@@ -204,5 +204,15 @@ TEST(Completion, StrayVoxelsOffTheSurfaceAreNotReflected) {
   for (int i : strays) EXPECT_FALSE(std::count(surface.begin(), surface.end(), i)) << "stray point " << i;
   // Only the segment's own points count: the face alone, without the points around it, is no
   // surface of a segment that holds one of its points.
-  EXPECT_TRUE(ss::surfacePoints(cloud, tree, {face.front()}, 0.021f, 3).empty());
+  EXPECT_TRUE(ss::surfacePoints(cloud, tree, {face.front()}, radius, ss::kMinSurfaceNeighbours).empty());
+  EXPECT_TRUE(ss::surfacePoints(cloud, tree, {}, radius, ss::kMinSurfaceNeighbours).empty());
+  // A point without coordinates is no surface, and the others keep theirs.
+  ss::Cloud with_nan = cloud;
+  with_nan.points[face[5]].x = std::nanf("");
+  with_nan.is_dense = false;
+  pcl::KdTreeFLANN<ss::PointT> nan_tree;
+  nan_tree.setInputCloud(with_nan.makeShared());
+  const std::vector<int> without_nan = ss::surfacePoints(with_nan, nan_tree, face, radius, ss::kMinSurfaceNeighbours);
+  EXPECT_EQ(without_nan.size(), face.size() - 1);
+  EXPECT_FALSE(std::count(without_nan.begin(), without_nan.end(), face[5]));
 }

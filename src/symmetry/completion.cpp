@@ -2,6 +2,7 @@
 #include "symmetry_segmentation/symmetry/completion.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <map>
 #include <set>
@@ -25,11 +26,6 @@ constexpr float kMaxRadiusShare = 0.6f;
 constexpr float kHeightSlice = 0.02f;         // m
 constexpr float kMaxRadiusDeviation = 0.08f;  // median deviation from the slice's median radius, of the radius
 constexpr float kGrowMargin = 0.01f;          // m, the working voxel
-// A point of a surface at the working voxel has 7-12 others within two voxels, of an edge 4-7;
-// a stray voxel of mixed pixels 0-2. Reflected, a stray voxel 10-25 cm off the object stretched
-// the completed box of single views (u-shape box IoU 0.77 -> 0.17).
-constexpr float kSurfaceRadiusVoxels = 2.0f;
-constexpr int kMinSurfaceNeighbours = 3;
 
 /// The same plane with a unit normal (planes from files or tests may come scaled).
 SymmetryPlane unitPlane(const SymmetryPlane& plane) {
@@ -133,7 +129,10 @@ std::vector<Eigen::Vector3f> onePerCell(const std::vector<Eigen::Vector3f>& poin
 std::vector<int> surfacePoints(const Cloud& cloud, const pcl::KdTreeFLANN<PointT>& tree, const std::vector<int>& points,
                                float radius, int min_neighbours) {
   std::vector<char> member(cloud.size(), 0);
-  for (int i : points) member[i] = 1;
+  for (int i : points) {
+    assert(i >= 0 && static_cast<std::size_t>(i) < cloud.size());
+    member[i] = 1;
+  }
   std::vector<int> surface;
   std::vector<int> near;
   std::vector<float> squared;
