@@ -35,19 +35,15 @@ TEST(Config, PresetsSetTheFilterThresholds) {
   const auto balanced = ss::loadConfigFile(test_support::sourceDir() + "/config/balanced.yaml");
   EXPECT_FLOAT_EQ(balanced.symmetry.filter.s_occl, 0.99f);
   EXPECT_FLOAT_EQ(balanced.symmetry.filter.s_smooth, 0.02f);
-  // The paper's method alone: its stages, none of the additions, and a list that runs.
+  // The authors' method alone: the paper's stages with rotational symmetry (upright axes, no
+  // face planes), none of the additions, and a list that runs.
   const auto paper = ss::loadConfigFile(test_support::sourceDir() + "/config/paper.yaml");
-  EXPECT_EQ(paper.symmetry.stages,
-            (std::vector<std::string>{"curves", "curve_pairs", "cut", "refine", "filter", "dedup", "object_bottoms"}));
+  EXPECT_EQ(paper.symmetry.stages, (std::vector<std::string>{"curves", "curve_pairs", "upright", "cut", "refine",
+                                                             "filter", "dedup", "object_bottoms"}));
+  EXPECT_EQ(paper.symmetry.upright.flat_curvature, 0.0f);
+  EXPECT_EQ(paper.symmetry.cut.unobserved_steps, 2);
+  EXPECT_EQ(paper.symmetry.filter.plane_offset_search, 0.0f);
   EXPECT_TRUE(ss::stageListProblems(paper.symmetry.stages).empty());
-  // The paper's stages with rotational symmetry (upright axes, no face planes), as the authors'
-  // implementation runs them.
-  const auto rotational = ss::loadConfigFile(test_support::sourceDir() + "/config/paper_rotational.yaml");
-  EXPECT_EQ(rotational.symmetry.stages, (std::vector<std::string>{"curves", "curve_pairs", "upright", "cut", "refine",
-                                                                  "filter", "dedup", "object_bottoms"}));
-  EXPECT_EQ(rotational.symmetry.upright.flat_curvature, 0.0f);
-  EXPECT_EQ(rotational.symmetry.cut.unobserved_steps, paper.symmetry.cut.unobserved_steps);
-  EXPECT_TRUE(ss::stageListProblems(rotational.symmetry.stages).empty());
   ss::SegmentationConfig config;
   ss::setConfigValue(config, "symmetry.filter.s_occl", "0.5");
   EXPECT_FLOAT_EQ(config.symmetry.filter.s_occl, 0.5f);
