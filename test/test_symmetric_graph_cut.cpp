@@ -120,6 +120,46 @@ TEST(SymmetricGraphCut, SpecksOfNoiseBehindABoxStayOutOfIt) {
   EXPECT_GT(specksIn(ss::SymmetricGraphCut(cloud, occupancy, boxes.table, params).segment(boxes.box1X())), 0);
 }
 
+// A depth camera's flying pixels: single voxels centimetres off a surface with nothing else
+// near them. One on the box's own symmetry plane is its own mirror image (foreground evidence),
+// and linked to the box it joined it; isolated, it gets no link and stays out.
+TEST(SymmetricGraphCut, IsolatedPointsTakePartInNoCut) {
+  const TwoBoxes boxes;
+  ss::Cloud::Ptr cloud(new ss::Cloud);
+  for (int i : boxes.box1) cloud->push_back(boxes.cloud->points[i]);
+  const int box_points = static_cast<int>(cloud->size());
+  const Eigen::Vector3f centre = boxes.centre1();
+  ss::PointT speck;
+  speck.getNormalVector3fMap() = Eigen::Vector3f::UnitZ();
+  speck.getVector3fMap() = Eigen::Vector3f(centre.x(), centre.y(), boxes.size1.z() + 0.035f);  // above the top
+  cloud->push_back(speck);
+  speck.getVector3fMap() = Eigen::Vector3f(centre.x(), boxes.min1.y() - 0.035f, 0.06f);  // before the front face
+  cloud->push_back(speck);
+  ss::Cloud with_table = *cloud;
+  test_clouds::addTable(with_table, 0.9f, 0.01f);
+  const ss::OccupancyMap occupancy =
+      ss::OccupancyMap::fromRayCasting(with_table, {Eigen::Vector3f(0.0f, -0.8f, 0.8f)});
+  const auto specksIn = [&](const std::vector<int>& segment) {
+    return std::count_if(segment.begin(), segment.end(), [&](int i) { return i >= box_points; });
+  };
+  ss::SymmetryCutParams params;
+  const ss::SymmetricGraphCut cut(cloud, occupancy, boxes.table, params);
+  for (int i = box_points; i < static_cast<int>(cloud->size()); ++i) {
+    EXPECT_TRUE(cut.isolated(i)) << i;
+    EXPECT_TRUE(cut.neighbours()[i].empty()) << i;
+  }
+  EXPECT_FALSE(cut.isolated(0));
+  const std::vector<int> segment = cut.segment(boxes.box1X());
+  EXPECT_EQ(specksIn(segment), 0);
+  EXPECT_GE(static_cast<int>(segment.size()), static_cast<int>(0.97 * box_points));
+  // Without the rule (isolated_radius 0) they are neighbours of the box and the cut takes them.
+  params.isolated_radius = 0.0f;
+  const ss::SymmetricGraphCut linked(cloud, occupancy, boxes.table, params);
+  EXPECT_FALSE(linked.isolated(box_points));
+  EXPECT_FALSE(linked.neighbours()[box_points].empty());
+  EXPECT_GT(specksIn(linked.segment(boxes.box1X())), 0);
+}
+
 TEST(SymmetricGraphCut, PlaneOfNothingGivesAnEmptyOrTinySegment) {
   const TwoBoxes scene;
   const ss::SymmetricGraphCut cut = scene.cut();

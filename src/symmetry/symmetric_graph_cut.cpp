@@ -28,12 +28,26 @@ bool isFinitePoint(const PointT& point) {
   return point.getVector3fMap().allFinite() && point.getNormalVector3fMap().allFinite();
 }
 
+/// Per point: whether no other finite point lies within `radius` (0: none is isolated).
+std::vector<char> isolatedPoints(const Cloud& cloud, const pcl::KdTreeFLANN<PointT>& tree, float radius) {
+  std::vector<char> isolated(cloud.size(), 0);
+  if (!(radius > 0.0f)) return isolated;
+  std::vector<int> indices;
+  std::vector<float> squared;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (!isFinitePoint(cloud.points[i])) continue;
+    // Itself and nothing else (the tree may hold points whose normal is NaN: they count too).
+    isolated[i] = tree.radiusSearch(cloud.points[i], radius, indices, squared, 2) < 2;
+  }
+  return isolated;
+}
+
 /// k nearest other points of every point within `max_distance` (0: any distance), made
-/// symmetric (j in N(i) <=> i in N(j)), sorted. Without the bound, an isolated voxel of sensor
-/// noise above the table is the neighbour of whatever surface is nearest, however far, and the
-/// cut's smoothness term pulls it into that object.
+/// symmetric (j in N(i) <=> i in N(j)), sorted; isolated points get none. Without the bound, an
+/// isolated voxel of sensor noise above the table is the neighbour of whatever surface is
+/// nearest, however far, and the cut's smoothness term pulls it into that object.
 std::vector<std::vector<int>> symmetricKnn(const Cloud& cloud, const pcl::KdTreeFLANN<PointT>& tree, int k,
-                                           float max_distance) {
+                                           float max_distance, const std::vector<char>& isolated) {
   const float max_squared = max_distance * max_distance;
   const int n = static_cast<int>(cloud.size());
   std::vector<std::vector<int>> neighbours(n);
@@ -41,12 +55,12 @@ std::vector<std::vector<int>> symmetricKnn(const Cloud& cloud, const pcl::KdTree
   std::vector<int> indices;
   std::vector<float> squared;
   for (int i = 0; i < n; ++i) {
-    if (!isFinitePoint(cloud.points[i])) continue;
+    if (!isFinitePoint(cloud.points[i]) || isolated[i]) continue;
     const int found = tree.nearestKSearch(cloud.points[i], k + 1, indices, squared);
     int taken = 0;
     for (int f = 0; f < found && taken < k; ++f) {
       const int j = indices[f];
-      if (j == i || !isFinitePoint(cloud.points[j])) continue;
+      if (j == i || !isFinitePoint(cloud.points[j]) || isolated[j]) continue;
       if (max_distance > 0.0f && squared[f] > max_squared) break;  // sorted by distance
       neighbours[i].push_back(j);
       neighbours[j].push_back(i);
@@ -81,7 +95,11 @@ SymmetricGraphCut::SymmetricGraphCut(Cloud::ConstPtr cloud, const OccupancyMap& 
   if (cloud_->empty()) return;
   tree_.setInputCloud(cloud_);
   grid_ = PointGrid(*cloud_, params_.dbuf);
-  neighbours_ = symmetricKnn(*cloud_, tree_, params_.neighbours, params_.max_neighbour_distance);
+  // A point with nothing near it is a depth camera's flying pixel or speckle (real Kinect frames
+  // hold tens, simulated RealSense ones hundreds): linked to whatever surface is nearest it
+  // joins, and chains of them join objects, so it takes part in no cut.
+  isolated_ = isolatedPoints(*cloud_, tree_, params_.isolated_radius);
+  neighbours_ = symmetricKnn(*cloud_, tree_, params_.neighbours, params_.max_neighbour_distance, isolated_);
   for (int a = 0; a < static_cast<int>(neighbours_.size()); ++a) {
     const PointT& p = cloud_->points[a];
     for (int b : neighbours_[a]) {
@@ -109,6 +127,10 @@ std::vector<int> SymmetricGraphCut::segment(const SymmetryPlane& plane, const st
   std::vector<float> support(n, 0.0f);
   bool any_support = false;
   for (int i = 0; i < n; ++i) {
+    if (isolated_[i]) {
+      evidence[i].cost_foreground = 1.0f;  // no links either: always background
+      continue;
+    }
     evidence[i] = data_term.evaluate(i, plane);
     support[i] = evidence[i].foreground_strength;
     any_support = any_support || support[i] > 0.0f;
@@ -122,7 +144,7 @@ std::vector<int> SymmetricGraphCut::segment(const SymmetryPlane& plane, const st
   std::vector<float> symmetric_weights;
   for (int i = 0; i < n; ++i) {
     const int j = evidence[i].match;
-    if (j < 0 || j == i || evidence[i].foreground_strength <= 0.0f) continue;
+    if (j < 0 || j == i || isolated_[j] || evidence[i].foreground_strength <= 0.0f) continue;
     if (evidence[j].match == i && evidence[j].foreground_strength > 0.0f && j < i) continue;  // added from j
     symmetric_links.emplace_back(i, j);
     symmetric_weights.push_back(params_.lambda_sym * evidence[i].foreground_strength);

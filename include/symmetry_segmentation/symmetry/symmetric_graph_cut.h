@@ -47,7 +47,11 @@ class SymmetricGraphCut {
   const Cloud& cloud() const { return *cloud_; }
   const pcl::KdTreeFLANN<PointT>& tree() const { return tree_; }
   /// k-NN smoothness neighbours of each point (the graph's edges, each listed from both ends).
+  /// An isolated point has none.
   const std::vector<std::vector<int>>& neighbours() const { return neighbours_; }
+  /// Whether point i has no other point within isolated_radius: a depth camera's flying pixel
+  /// or speckle, never part of a segment.
+  bool isolated(int i) const { return isolated_[i] != 0; }
 
  private:
   Cloud::ConstPtr cloud_;
@@ -57,6 +61,7 @@ class SymmetricGraphCut {
   SymmetryCutParams params_;
   pcl::KdTreeFLANN<PointT> tree_;
   std::vector<std::vector<int>> neighbours_;
+  std::vector<char> isolated_;  ///< Per point: no other point within isolated_radius.
 
   struct SmoothLink {
     int a = 0;
