@@ -7,10 +7,13 @@
 // under IoU 0.9. Normals tell the two apart: the table faces up, an object's sides face across
 // it - the input's own, or for a camera frame without them, normals from its pixel grid as the
 // working cloud got (a RealSense frame's bottom strip came back nowhere before: realistic
-// single frames 0.675 -> 0.688). The baselines call this on their final segments (their
+// single frames 0.675 -> 0.688). A hollow object's inside floor, which faces up like the
+// table, comes back by where it lies: enclosed by the object's footprint (object_floors.h).
+// The baselines call this on their final segments (their
 // restore_object_bottoms); the symmetry method runs it as its stage object_bottoms.
 #include <vector>
 
+#include "symmetry_segmentation/object_floors.h"
 #include "symmetry_segmentation/parameter_schema.h"
 #include "symmetry_segmentation/preprocessing.h"
 #include "symmetry_segmentation/scene.h"
@@ -21,20 +24,24 @@ namespace symmetry_segmentation {
 struct ObjectBottomParams {
   float max_side_normal_cos = 0.5f;
   float link_distance = 0.0f;
+  float min_floor_area = 0.0016f;
 };
 
 inline void describeParameters(ParameterList<ObjectBottomParams>& list) {
   list.add("max_side_normal_cos", &ObjectBottomParams::max_side_normal_cos, 0.0, 1.0, "",
            "a dropped point whose normal has a smaller |cosine| with the table's is an object's side (0.5: 60 deg)")
       .add("link_distance", &ObjectBottomParams::link_distance, 0.0, 0.1, "m",
-           "reach from a segment's point to a side point; 0: the working voxel size");
+           "reach from a segment's point to a side point; 0: the working voxel size")
+      .add("min_floor_area", &ObjectBottomParams::min_floor_area, 0.0, 1.0, "m^2",
+           "dropped points in a pocket this large that a segment's footprint encloses are its floor (a bowl's inside); 0: none");
 }
 
 /// For each segment (sorted input-cloud indices): the input points preprocessing dropped as
 /// within the table margin whose own normal runs across the table's and which are linked,
 /// directly or through other such points, to the segment's points within the link distance
-/// (each goes to the segment of the nearest such point); sorted. All empty without a table, or
-/// without input normals unless `prepared` got the table band's from the frame's pixel grid.
+/// (each goes to the segment of the nearest such point; none without input normals unless
+/// `prepared` got the table band's from the frame's pixel grid), and those its footprint
+/// encloses (object_floors.h, min_floor_area > 0); sorted. All empty without a table.
 std::vector<std::vector<int>> objectBottoms(const Scene& scene, const PreprocessedScene& prepared, float voxel_size,
                                             const std::vector<std::vector<int>>& segments,
                                             const ObjectBottomParams& params);

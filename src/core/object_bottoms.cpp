@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 #include <pcl/kdtree/kdtree_flann.h>
@@ -11,9 +12,12 @@
 
 namespace symmetry_segmentation {
 
-std::vector<std::vector<int>> objectBottoms(const Scene& scene, const PreprocessedScene& prepared, float voxel_size,
-                                            const std::vector<std::vector<int>>& segments,
-                                            const ObjectBottomParams& params) {
+namespace {
+
+/// The side points of objectBottoms (see the header).
+std::vector<std::vector<int>> objectSides(const Scene& scene, const PreprocessedScene& prepared, float voxel_size,
+                                          const std::vector<std::vector<int>>& segments,
+                                          const ObjectBottomParams& params) {
   std::vector<std::vector<int>> added(segments.size());
   // A camera frame without normals got them from its pixel grid, the table band's too.
   const bool band_normals = !scene.has_normals && !prepared.table_band_normals.empty();
@@ -92,6 +96,30 @@ std::vector<std::vector<int>> objectBottoms(const Scene& scene, const Preprocess
   // Candidates are in input order, so each list comes out sorted.
   for (std::size_t c = 0; c < candidates.size(); ++c) {
     if (owner[c] >= 0) added[owner[c]].push_back(candidates[c]);
+  }
+  return added;
+}
+
+}  // namespace
+
+std::vector<std::vector<int>> objectBottoms(const Scene& scene, const PreprocessedScene& prepared, float voxel_size,
+                                            const std::vector<std::vector<int>>& segments,
+                                            const ObjectBottomParams& params) {
+  std::vector<std::vector<int>> added = objectSides(scene, prepared, voxel_size, segments, params);
+  if (!(params.min_floor_area > 0.0f)) return added;
+  std::vector<int> taken;
+  for (const auto& list : added) taken.insert(taken.end(), list.begin(), list.end());
+  std::sort(taken.begin(), taken.end());
+  FloorParams floor_params;
+  floor_params.cell = voxel_size;
+  floor_params.min_floor_area = params.min_floor_area;
+  const std::vector<std::vector<int>> floors = enclosedFloors(scene, prepared, segments, taken, floor_params);
+  for (std::size_t s = 0; s < added.size(); ++s) {
+    if (floors[s].empty()) continue;
+    std::vector<int> merged;
+    merged.reserve(added[s].size() + floors[s].size());
+    std::merge(added[s].begin(), added[s].end(), floors[s].begin(), floors[s].end(), std::back_inserter(merged));
+    added[s].swap(merged);
   }
   return added;
 }

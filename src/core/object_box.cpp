@@ -10,6 +10,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "symmetry_segmentation/point_validity.h"
+#include "symmetry_segmentation/sparse_cells.h"
 #include "symmetry_segmentation/voxel_grid.h"
 
 namespace symmetry_segmentation {
@@ -23,38 +24,6 @@ std::vector<Eigen::Vector3f> usablePoints(const Cloud& cloud, const std::vector<
     points.push_back(cloud[index].getVector3fMap());
   }
   return points;
-}
-
-constexpr float kDensityCell = 0.01f;      // the working resolution
-constexpr double kSparseCellShare = 0.2;   // of the points' typical cell count
-
-/// `points` without those in sparse cells: a depth camera's stray pixels (mixed depths at an
-/// object's outline, speckle) lie alone or in thin streaks, and one of them stretches a box by
-/// centimetres and turns its footprint. A cell is sparse when it holds fewer than a fifth of the
-/// points the typical point's cell holds (the median over the points), which keeps every surface
-/// a camera samples evenly. Measured on generated single Kinect views: median box IoU 0.63 to
-/// 0.78 (RealSense 0.47 to 0.65), fused scenes 0.90 to 0.91.
-std::vector<Eigen::Vector3f> withoutSparseCells(const std::vector<Eigen::Vector3f>& points) {
-  if (points.empty()) return points;
-  std::map<std::array<std::int64_t, 3>, int> counts;
-  std::vector<std::array<std::int64_t, 3>> cells;
-  cells.reserve(points.size());
-  for (const auto& p : points) {
-    cells.push_back(voxelKey(p, kDensityCell));
-    ++counts[cells.back()];
-  }
-  std::vector<int> per_point;
-  per_point.reserve(points.size());
-  for (const auto& cell : cells) per_point.push_back(counts[cell]);
-  std::vector<int> sorted = per_point;
-  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-  const double typical = sorted[sorted.size() / 2];
-  std::vector<Eigen::Vector3f> dense;
-  dense.reserve(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    if (per_point[i] >= kSparseCellShare * typical) dense.push_back(points[i]);
-  }
-  return dense;
 }
 
 double cross(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
