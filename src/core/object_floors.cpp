@@ -10,8 +10,9 @@
 namespace symmetry_segmentation {
 namespace {
 
-// A footprint wider than this (cells a side) is no graspable object's; its pockets are not looked for.
-constexpr int kMaxFootprintCells = 400;
+// A footprint wider than this (m) is no graspable object's (object_size drops those over 0.5 m);
+// its pockets are not looked for, which also bounds the rays' work.
+constexpr float kMaxFootprintSide = 1.0f;
 
 /// A segment's footprint on the table: which cells its points fall in, and which cells lie in a
 /// pocket the footprint encloses (large enough to be a floor).
@@ -35,7 +36,8 @@ class Footprint {
     }
     width_ = max_x_ - min_x_ + 1;
     height_ = max_y_ - min_y_ + 1;
-    if (width_ > kMaxFootprintCells || height_ > kMaxFootprintCells) {
+    const int max_cells = static_cast<int>(std::ceil(kMaxFootprintSide / params_.cell));
+    if (width_ > max_cells || height_ > max_cells) {
       width_ = height_ = 0;
       return;
     }
