@@ -73,7 +73,8 @@ TEST(ObjectBottoms, TheTableStaysOut) {
   ss::restoreObjectBottoms(box.scene, prepared, box.params.voxel_size, segments, {});
   EXPECT_EQ(segments[0].indices, box.boxPoints());
 
-  // Without the input's own normals nothing tells sides from table: nothing is added.
+  // Without the input's own normals nothing tells sides from table: nothing is added (and a
+  // solid box encloses no floor: its strip lies in the footprint's outermost cells).
   segments[0].indices = box.boxPoints(&prepared);
   box.scene.has_normals = false;
   EXPECT_EQ(ss::restoreObjectBottoms(box.scene, prepared, box.params.voxel_size, segments, {}), 0u);

@@ -8,9 +8,12 @@
 // segment's points surround it: in each of 8 directions across the table a ray from it meets
 // the segment's footprint (its points in sparse 1 cm cells left out: specks of the table's noise
 // in a segment would close pockets anywhere). Table seen beside an object (an L's inner corner, between a U's legs,
-// a box's turned footprint) has a way out. A pocket smaller than min_floor_area (a handle's
-// loop) is left to the table, and so is a pocket's outermost ring of cells (under a bowl's
-// overhanging rim the table is seen from the side).
+// a box's turned footprint) has a way out. A pocket's outermost ring of cells is left to the
+// table (under a bowl's overhanging rim the table is seen from the side), and so is a pocket
+// smaller than min_floor_area. Pockets include the footprint's own cells (a floor's noise above
+// the margin stays in the segment): where a solid object hides the table no view sees it, but
+// table seen under an overhang wider than a cell (a lying bottle's side from low down) would
+// count as floor; a handle's loop, joined to a mug's footprint, mostly falls in the ring.
 
 #include <vector>
 

@@ -29,7 +29,7 @@ inline void describeParameters(ParameterList<EuclideanParams>& list) {
       .add("min_cluster_size", &P::min_cluster_size, 1, 100000000, "points", "in working-cloud points (1 cm voxels)")
       .add("max_cluster_size", &P::max_cluster_size, 1, 100000000, "points", "larger clusters are dropped")
       .add("restore_object_bottoms", &P::restore_object_bottoms,
-           "give each segment back its sides' points within the table margin (object_bottoms)")
+           "give each segment back its sides' points and inside floor within the table margin (object_bottoms)")
       .rule([](const P& p) {
         return p.max_cluster_size >= p.min_cluster_size ? "" : "max_cluster_size must be >= min_cluster_size";
       });
@@ -65,7 +65,7 @@ inline void describeParameters(ParameterList<LccpParams>& list) {
       .add("use_sanity_criterion", &P::use_sanity_criterion, "LCCP sanity criterion")
       .add("min_points", &P::min_points, 0, 100000000, "points", "segments with fewer input points are dropped")
       .add("restore_object_bottoms", &P::restore_object_bottoms,
-           "give each segment back its sides' points within the table margin (object_bottoms)")
+           "give each segment back its sides' points and inside floor within the table margin (object_bottoms)")
       .rule([](const P& p) {
         return p.seed_resolution > p.voxel_resolution ? "" : "needs voxel_resolution < seed_resolution";
       });

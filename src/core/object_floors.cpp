@@ -59,31 +59,34 @@ class Footprint {
  private:
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * width_ + x; }
 
-  /// Every one of 8 rays from the cell meets an occupied cell before leaving the box.
-  bool enclosed(int x, int y) const {
+  /// Per cell: whether every one of 8 rays from it meets an occupied cell before leaving the
+  /// box. One sweep per direction, each cell looking at the next one along the ray.
+  std::vector<char> enclosedCells() const {
     static const int kSteps[8][2] = {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
+    std::vector<char> enclosed(occupied_.size(), 1);
+    std::vector<char> hit(occupied_.size(), 0);
     for (const auto& step : kSteps) {
-      int cx = x + step[0], cy = y + step[1];
-      bool hit = false;
-      while (cx >= 0 && cy >= 0 && cx < width_ && cy < height_) {
-        if (occupied_[index(cx, cy)]) {
-          hit = true;
-          break;
+      // Visit the cells so that (x + dx, y + dy) comes before (x, y).
+      for (int j = 0; j < height_; ++j) {
+        const int y = step[1] > 0 ? height_ - 1 - j : j;
+        for (int i = 0; i < width_; ++i) {
+          const int x = step[0] > 0 ? width_ - 1 - i : i;
+          const int nx = x + step[0], ny = y + step[1];
+          const bool inside = nx >= 0 && ny >= 0 && nx < width_ && ny < height_;
+          hit[index(x, y)] = inside && (occupied_[index(nx, ny)] || hit[index(nx, ny)]);
+          if (!hit[index(x, y)]) enclosed[index(x, y)] = 0;
         }
-        cx += step[0];
-        cy += step[1];
       }
-      if (!hit) return false;
     }
-    return true;
+    return enclosed;
   }
 
   /// Enclosed cells, kept where they form a 4-connected pocket of at least min_floor_area.
   void findFloor() {
-    std::vector<char> inside(occupied_.size(), 0);
-    for (int y = 0; y < height_; ++y) {
-      for (int x = 0; x < width_; ++x) inside[index(x, y)] = enclosed(x, y);
-    }
+    // The footprint's own cells count too: a floor's noise that reached past the table margin
+    // stays in the segment and occupies floor cells, and under a solid footprint no view sees
+    // the table anyway.
+    const std::vector<char> inside = enclosedCells();
     floor_.assign(occupied_.size(), 0);
     const auto min_cells = static_cast<std::size_t>(std::ceil(params_.min_floor_area / (params_.cell * params_.cell)));
     std::vector<char> seen(occupied_.size(), 0);

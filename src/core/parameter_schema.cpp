@@ -72,7 +72,7 @@ const Schema& schema() {
     s.section<PreprocessParams>("preprocessing", "shared by every method: supporting plane, working cloud, normals",
                                 [](auto& c) -> auto& { return c.preprocessing; });
     s.section<ObjectBottomParams>("object_bottoms",
-                                  "every method (symmetry: stage object_bottoms): object sides within the table margin",
+                                  "every method (symmetry: stage object_bottoms): object sides and inside floors within the table margin",
                                   [](auto& c) -> auto& { return c.object_bottoms; });
     s.section<EuclideanParams>("euclidean", "pcl::EuclideanClusterExtraction on the working cloud",
                                [](auto& c) -> auto& { return c.euclidean; });

@@ -1,4 +1,4 @@
-// Stage 19, object_bottoms: the sides' points within the table margin back to their segments.
+// Stage 19, object_bottoms: the sides' points and inside floors within the table margin back to their segments.
 #include "symmetry_segmentation/symmetry/object_bottom_stage.h"
 
 #include "symmetry_segmentation/symmetry/pipeline_state.h"

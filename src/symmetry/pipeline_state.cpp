@@ -1,6 +1,8 @@
 // The pipeline state: the scene prepared for the stages, and the segments it reports.
 #include "symmetry_segmentation/symmetry/pipeline_state.h"
 
+#include <algorithm>
+
 #include "symmetry_segmentation/occupancy.h"
 #include "symmetry_segmentation/segment_order.h"
 #include "symmetry_segmentation/stopwatch.h"
@@ -39,7 +41,11 @@ PipelineState preparePipeline(const Scene& scene, const PreprocessParams& prepro
 
   std::optional<PlaneCoefficients> table;
   if (state.prepared.has_table) table = state.prepared.table_plane;
-  state.graph = std::make_unique<SymmetricGraphCut>(state.cloud, *state.occupancy, table, params.cut);
+  // On a coarser working grid the points stand farther apart: isolated means no other within
+  // two voxels at least, else every point of a 3 cm grid would be.
+  SymmetryCutParams cut = params.cut;
+  if (cut.isolated_radius > 0.0f) cut.isolated_radius = std::max(cut.isolated_radius, 2.0f * preprocessing.voxel_size);
+  state.graph = std::make_unique<SymmetricGraphCut>(state.cloud, *state.occupancy, table, cut);
   state.evidence = std::make_unique<GraphEvidence>(*state.graph, *state.occupancy, params.filter);
   state.timing_ms.emplace_back("graph", stage.lap());
   const PreprocessedScene::Dropped& dropped = state.prepared.dropped;

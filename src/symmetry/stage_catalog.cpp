@@ -99,7 +99,7 @@ const std::vector<StageInfo>& stageCatalog() {
       {"stray_color_pieces", K::SegmentRewriter, "a strip of the next object's colour moves to that object",
        {P::Segments}, {},
        [](const Config& c) { return made<StrayColorStage>(c.symmetry.stray_color_pieces); }},
-      {"object_bottoms", K::SegmentRewriter, "each segment gets back its sides' points within the table margin",
+      {"object_bottoms", K::SegmentRewriter, "each segment gets back its sides' points and inside floor within the table margin",
        {P::Segments}, {},
        [](const Config& c) { return made<ObjectBottomStage>(c.object_bottoms, c.preprocessing.voxel_size); }},
       {"completion", K::SegmentRewriter, "each segment's unseen side: its reflections (and turned copies, about an axis of revolution) into unobserved space; the completed box and symmetry frame",

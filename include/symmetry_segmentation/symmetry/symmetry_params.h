@@ -160,7 +160,7 @@ inline void describeParameters(ParameterList<SymmetryCutParams>& list) {
       .add("max_neighbour_distance", &P::max_neighbour_distance, 0.0, 1.0, "m",
            "...but points farther apart are not neighbours: a speck of noise is no part of the surface nearest to it; 0: no limit")
       .add("isolated_radius", &P::isolated_radius, 0.0, 0.5, "m",
-           "a point with no other this close is sensor noise (a flying pixel): no links, never foreground; 0: none is")
+           "a point with no other this close (at least 2 working voxels) is sensor noise (a flying pixel): no links, never foreground; 0: none is")
       .add("unobserved_steps", &P::unobserved_steps, 0, 5, "dmax steps",
            "a reflection into free space within this many dmax steps of unobserved or occupied space is only that far from a surface (the authors' obstacle distance); 0: scene points only")
       .rule([](const P& p) { return p.dmax < p.dbuf ? "" : "needs dmax < dbuf"; })
