@@ -65,6 +65,32 @@ struct TwoBoxes {
   ss::SymmetricGraphCut cut() const { return ss::SymmetricGraphCut(cloud, *occupancy, table, {}); }
 };
 
+/// The first box alone with specks of noise (`specks`, normals up) around it, the table in the
+/// map: the speck tests' scene.
+struct BoxWithSpecks {
+  ss::Cloud::Ptr cloud{new ss::Cloud};
+  int box_points = 0;
+  std::unique_ptr<ss::OccupancyMap> occupancy;
+
+  BoxWithSpecks(const TwoBoxes& boxes, const std::vector<Eigen::Vector3f>& specks) {
+    for (int i : boxes.box1) cloud->push_back(boxes.cloud->points[i]);
+    box_points = static_cast<int>(cloud->size());
+    for (const Eigen::Vector3f& position : specks) {
+      ss::PointT speck;
+      speck.getVector3fMap() = position;
+      speck.getNormalVector3fMap() = Eigen::Vector3f::UnitZ();
+      cloud->push_back(speck);
+    }
+    ss::Cloud with_table = *cloud;
+    test_clouds::addTable(with_table, 0.9f, 0.01f);
+    occupancy = std::make_unique<ss::OccupancyMap>(
+        ss::OccupancyMap::fromRayCasting(with_table, {Eigen::Vector3f(0.0f, -0.8f, 0.8f)}));
+  }
+  long specksIn(const std::vector<int>& segment) const {
+    return std::count_if(segment.begin(), segment.end(), [&](int i) { return i >= box_points; });
+  }
+};
+
 int countIn(const std::vector<int>& segment, const std::vector<int>& part) {
   int count = 0;
   for (int i : segment) count += std::binary_search(part.begin(), part.end(), i) ? 1 : 0;
@@ -93,31 +119,22 @@ TEST(SymmetricGraphCut, CorrectPlaneSegmentsExactlyThatBox) {
 // them into the object, and a box with specks 6-12 cm behind it measured too large to be one.
 TEST(SymmetricGraphCut, SpecksOfNoiseBehindABoxStayOutOfIt) {
   const TwoBoxes boxes;
-  ss::Cloud::Ptr cloud(new ss::Cloud);
-  for (int i : boxes.box1) cloud->push_back(boxes.cloud->points[i]);
-  const int box_points = static_cast<int>(cloud->size());
   const Eigen::Vector3f behind = boxes.min1 + Eigen::Vector3f(0.0f, boxes.size1.y(), 0.0f);
+  std::vector<Eigen::Vector3f> specks;
   for (int k = 0; k < 6; ++k) {
-    ss::PointT speck;
-    speck.getVector3fMap() = behind + Eigen::Vector3f(0.015f * static_cast<float>(k + 1), 0.06f + 0.012f * static_cast<float>(k),
-                                                      0.005f + 0.002f * static_cast<float>(k % 3));
-    speck.getNormalVector3fMap() = Eigen::Vector3f::UnitZ();
-    cloud->push_back(speck);
+    specks.push_back(behind + Eigen::Vector3f(0.015f * static_cast<float>(k + 1), 0.06f + 0.012f * static_cast<float>(k),
+                                              0.005f + 0.002f * static_cast<float>(k % 3)));
   }
-  ss::Cloud with_table = *cloud;
-  test_clouds::addTable(with_table, 0.9f, 0.01f);
-  const ss::OccupancyMap occupancy =
-      ss::OccupancyMap::fromRayCasting(with_table, {Eigen::Vector3f(0.0f, -0.8f, 0.8f)});
-  const auto specksIn = [&](const std::vector<int>& segment) {
-    return std::count_if(segment.begin(), segment.end(), [&](int i) { return i >= box_points; });
-  };
+  const BoxWithSpecks scene(boxes, specks);
   ss::SymmetryCutParams params;
-  const std::vector<int> segment = ss::SymmetricGraphCut(cloud, occupancy, boxes.table, params).segment(boxes.box1X());
-  EXPECT_GE(static_cast<int>(segment.size()) - specksIn(segment), static_cast<int>(0.97 * box_points));
-  EXPECT_EQ(specksIn(segment), 0);
+  const std::vector<int> segment =
+      ss::SymmetricGraphCut(scene.cloud, *scene.occupancy, boxes.table, params).segment(boxes.box1X());
+  EXPECT_GE(static_cast<long>(segment.size()) - scene.specksIn(segment), static_cast<long>(0.97 * scene.box_points));
+  EXPECT_EQ(scene.specksIn(segment), 0);
   // The paper's plain k-nearest-neighbour graph takes them: the bound is what keeps them out.
   params.max_neighbour_distance = 0.0f;
-  EXPECT_GT(specksIn(ss::SymmetricGraphCut(cloud, occupancy, boxes.table, params).segment(boxes.box1X())), 0);
+  EXPECT_GT(scene.specksIn(ss::SymmetricGraphCut(scene.cloud, *scene.occupancy, boxes.table, params).segment(boxes.box1X())),
+            0);
 }
 
 // A depth camera's flying pixels: single voxels centimetres off a surface with nothing else
@@ -125,39 +142,26 @@ TEST(SymmetricGraphCut, SpecksOfNoiseBehindABoxStayOutOfIt) {
 // and linked to the box it joined it; isolated, it gets no link and stays out.
 TEST(SymmetricGraphCut, IsolatedPointsTakePartInNoCut) {
   const TwoBoxes boxes;
-  ss::Cloud::Ptr cloud(new ss::Cloud);
-  for (int i : boxes.box1) cloud->push_back(boxes.cloud->points[i]);
-  const int box_points = static_cast<int>(cloud->size());
   const Eigen::Vector3f centre = boxes.centre1();
-  ss::PointT speck;
-  speck.getNormalVector3fMap() = Eigen::Vector3f::UnitZ();
-  speck.getVector3fMap() = Eigen::Vector3f(centre.x(), centre.y(), boxes.size1.z() + 0.035f);  // above the top
-  cloud->push_back(speck);
-  speck.getVector3fMap() = Eigen::Vector3f(centre.x(), boxes.min1.y() - 0.035f, 0.06f);  // before the front face
-  cloud->push_back(speck);
-  ss::Cloud with_table = *cloud;
-  test_clouds::addTable(with_table, 0.9f, 0.01f);
-  const ss::OccupancyMap occupancy =
-      ss::OccupancyMap::fromRayCasting(with_table, {Eigen::Vector3f(0.0f, -0.8f, 0.8f)});
-  const auto specksIn = [&](const std::vector<int>& segment) {
-    return std::count_if(segment.begin(), segment.end(), [&](int i) { return i >= box_points; });
-  };
+  const BoxWithSpecks scene(boxes, {Eigen::Vector3f(centre.x(), centre.y(), boxes.size1.z() + 0.035f),  // above the top
+                                    Eigen::Vector3f(centre.x(), boxes.min1.y() - 0.035f, 0.06f)});     // before the front
+  const int box_points = scene.box_points;
   ss::SymmetryCutParams params;
-  const ss::SymmetricGraphCut cut(cloud, occupancy, boxes.table, params);
-  for (int i = box_points; i < static_cast<int>(cloud->size()); ++i) {
+  const ss::SymmetricGraphCut cut(scene.cloud, *scene.occupancy, boxes.table, params);
+  for (int i = box_points; i < static_cast<int>(scene.cloud->size()); ++i) {
     EXPECT_TRUE(cut.isolated(i)) << i;
     EXPECT_TRUE(cut.neighbours()[i].empty()) << i;
   }
   EXPECT_FALSE(cut.isolated(0));
   const std::vector<int> segment = cut.segment(boxes.box1X());
-  EXPECT_EQ(specksIn(segment), 0);
+  EXPECT_EQ(scene.specksIn(segment), 0);
   EXPECT_GE(static_cast<int>(segment.size()), static_cast<int>(0.97 * box_points));
   // Without the rule (isolated_radius 0) they are neighbours of the box and the cut takes them.
   params.isolated_radius = 0.0f;
-  const ss::SymmetricGraphCut linked(cloud, occupancy, boxes.table, params);
+  const ss::SymmetricGraphCut linked(scene.cloud, *scene.occupancy, boxes.table, params);
   EXPECT_FALSE(linked.isolated(box_points));
   EXPECT_FALSE(linked.neighbours()[box_points].empty());
-  EXPECT_GT(specksIn(linked.segment(boxes.box1X())), 0);
+  EXPECT_GT(scene.specksIn(linked.segment(boxes.box1X())), 0);
 }
 
 TEST(SymmetricGraphCut, PlaneOfNothingGivesAnEmptyOrTinySegment) {

@@ -14,6 +14,11 @@ namespace {
 // its pockets are not looked for, which also bounds the rays' work.
 constexpr float kMaxFootprintSide = 1.0f;
 
+/// The cell of the table's grid (axes e1, e2, side `cell`) a point lies over.
+std::pair<int, int> cellOf(const Eigen::Vector3f& p, const Eigen::Vector3f& e1, const Eigen::Vector3f& e2, float cell) {
+  return {static_cast<int>(std::floor(p.dot(e1) / cell)), static_cast<int>(std::floor(p.dot(e2) / cell))};
+}
+
 /// A segment's footprint on the table: which cells its points fall in, and which cells lie in a
 /// pocket the footprint encloses (large enough to be a floor).
 class Footprint {
@@ -25,7 +30,7 @@ class Footprint {
     if (points.empty()) return;
     std::vector<std::pair<int, int>> cells;
     cells.reserve(points.size());
-    for (const Eigen::Vector3f& p : points) cells.push_back(cellOf(p, e1, e2));
+    for (const Eigen::Vector3f& p : points) cells.push_back(cellOf(p, e1, e2, params_.cell));
     min_x_ = max_x_ = cells.front().first;
     min_y_ = max_y_ = cells.front().second;
     for (const auto& [x, y] : cells) {
@@ -44,10 +49,6 @@ class Footprint {
     occupied_.assign(static_cast<std::size_t>(width_) * height_, 0);
     for (const auto& [x, y] : cells) occupied_[index(x - min_x_, y - min_y_)] = 1;
     findFloor();
-  }
-
-  std::pair<int, int> cellOf(const Eigen::Vector3f& p, const Eigen::Vector3f& e1, const Eigen::Vector3f& e2) const {
-    return {static_cast<int>(std::floor(p.dot(e1) / params_.cell)), static_cast<int>(std::floor(p.dot(e2) / params_.cell))};
   }
 
   bool onFloor(const std::pair<int, int>& cell) const {
@@ -176,7 +177,7 @@ std::vector<std::vector<int>> enclosedFloors(const Scene& scene, const Preproces
     const float h = (up.dot(p.getVector3fMap()) * up_norm + prepared.table_plane[3]) / up_norm;
     if (h < -prepared.table_margin || h > prepared.table_margin) continue;
     if (std::binary_search(taken.begin(), taken.end(), static_cast<int>(i))) continue;
-    const auto cell = footprints.empty() ? std::pair<int, int>{0, 0} : footprints.front().cellOf(p.getVector3fMap(), e1, e2);
+    const auto cell = cellOf(p.getVector3fMap(), e1, e2, params.cell);
     for (std::size_t s = 0; s < footprints.size(); ++s) {
       if (!footprints[s].onFloor(cell)) continue;
       added[s].push_back(static_cast<int>(i));  // input order: sorted
