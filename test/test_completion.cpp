@@ -113,6 +113,35 @@ TEST(Completion, AddedPointsFarFromTheVisibleBoxAreNoHiddenSide) {
   EXPECT_NEAR(ss::completedBox(visible, two_past, Eigen::Vector3f::UnitZ(), 0.0f).size.x(), 0.1f, 1e-3f);
 }
 
+TEST(Completion, TheTurningAxisIsFittedToTheRoundPoints) {
+  // The front half of a can of radius 4 cm about the vertical axis through (0.3, 0), 5 cm high,
+  // and a cone's half narrowing from 4 to 2 cm; the axis handed in 1.1 cm off.
+  const Eigen::Vector3f up = Eigen::Vector3f::UnitZ();
+  const Eigen::Vector3f given(0.31f, 0.005f, 0.02f);
+  std::vector<Eigen::Vector3f> can, cone;
+  for (int k = 0; k <= 18; ++k) {
+    const float angle = static_cast<float>(M_PI) * static_cast<float>(k) / 18.0f;
+    for (float z = 0.0f; z <= 0.0501f; z += 0.01f) {
+      can.emplace_back(0.3f + 0.04f * std::cos(angle), -0.04f * std::sin(angle), z);
+      const float radius = 0.04f - 0.4f * z;
+      cone.emplace_back(0.3f + radius * std::cos(angle), -radius * std::sin(angle), z);
+    }
+  }
+  for (const auto* surface : {&can, &cone}) {
+    const Eigen::Vector3f refined = ss::refinedRevolutionAxis(*surface, given, up);
+    EXPECT_NEAR(refined.x(), 0.3f, 2e-3f);
+    EXPECT_NEAR(refined.y(), 0.0f, 2e-3f);
+    EXPECT_NEAR(refined.z(), given.z(), 1e-6f) << "moved only across";
+  }
+  // An axis 5 cm off is another object's: not moved 5 cm.
+  EXPECT_TRUE(ss::refinedRevolutionAxis(can, Eigen::Vector3f(0.35f, 0.0f, 0.0f), up).isApprox(Eigen::Vector3f(0.35f, 0.0f, 0.0f)));
+  // A point 2 cm outside the can's wall (what is left of a handle) is not turned with it.
+  std::vector<Eigen::Vector3f> with_handle = can;
+  with_handle.emplace_back(0.36f, 0.0f, 0.03f);
+  const auto round = ss::roundPoints(with_handle, Eigen::Vector3f(0.3f, 0.0f, 0.0f), up);
+  EXPECT_EQ(round.size(), can.size());
+}
+
 TEST(Completion, TheSymmetryFrameSitsOnThePlaneWithZUp) {
   ss::SymmetryPlane plane;
   plane.normal = Eigen::Vector3f(1.0f, 0.0f, 0.2f).normalized();  // a plane leaning a little

@@ -6,6 +6,7 @@
 #include <iterator>
 #include <cmath>
 #include <map>
+#include <unordered_map>
 #include <set>
 #include <limits>
 
@@ -27,6 +28,9 @@ constexpr float kMaxRadiusShare = 0.6f;
 constexpr float kHeightSlice = 0.02f;         // m
 constexpr float kMaxRadiusDeviation = 0.08f;  // median deviation from the slice's median radius, of the radius
 constexpr float kGrowMargin = 0.01f;          // m, the working voxel
+constexpr float kMaxAxisShift = 0.02f;        // m, refinedRevolutionAxis
+constexpr int kAxisFitIterations = 10;
+constexpr float kMaxRoundDeviation = 0.1f;    // of the slice's median radius, roundPoints
 // Added points past the visible box continue the object: no gap wider than this along the
 // box's axis, and at least this many of them.
 constexpr float kMaxHiddenSideGap = 0.03f;  // m
@@ -136,6 +140,75 @@ std::vector<int> revolutionSurface(const Cloud& cloud, const std::vector<int>& p
   // Normals that turn continuously: the middles of a box's faces are round about its centre line.
   if (!coversAnArc(cloud, surface, up, axes)) return {};
   return surface;
+}
+
+namespace {
+long heightSlice(const Eigen::Vector3f& p, const Eigen::Vector3f& up) {
+  return std::lround(std::floor(up.dot(p) / kHeightSlice));
+}
+
+/// The horizontal offset of p from the vertical axis through axis_point.
+Eigen::Vector3f radialOffset(const Eigen::Vector3f& p, const Eigen::Vector3f& axis_point, const Eigen::Vector3f& up) {
+  const Eigen::Vector3f offset = p - axis_point;
+  return offset - offset.dot(up) * up;
+}
+}  // namespace
+
+Eigen::Vector3f refinedRevolutionAxis(const std::vector<Eigen::Vector3f>& surface, const Eigen::Vector3f& axis_point,
+                                      const Eigen::Vector3f& up) {
+  if (surface.size() < 3) return axis_point;
+  // In the horizontal plane (u, v): the centre c, each slice's radius its points' mean distance
+  // from c; Gauss-Newton on the centre, the radii re-measured each step.
+  const Eigen::Vector3f u = up.unitOrthogonal();
+  const Eigen::Vector3f v = up.cross(u);
+  std::vector<Eigen::Vector2f> flat;
+  std::vector<long> slice;
+  flat.reserve(surface.size());
+  slice.reserve(surface.size());
+  for (const Eigen::Vector3f& p : surface) {
+    flat.emplace_back(u.dot(p), v.dot(p));
+    slice.push_back(heightSlice(p, up));
+  }
+  const Eigen::Vector2f start(u.dot(axis_point), v.dot(axis_point));
+  Eigen::Vector2f centre = start;
+  for (int iteration = 0; iteration < kAxisFitIterations; ++iteration) {
+    std::unordered_map<long, std::pair<float, int>> radius_sums;
+    for (std::size_t k = 0; k < flat.size(); ++k) {
+      auto& sum = radius_sums[slice[k]];
+      sum.first += (flat[k] - centre).norm();
+      ++sum.second;
+    }
+    Eigen::Matrix2f normal_matrix = Eigen::Matrix2f::Zero();
+    Eigen::Vector2f gradient = Eigen::Vector2f::Zero();
+    for (std::size_t k = 0; k < flat.size(); ++k) {
+      const Eigen::Vector2f d = flat[k] - centre;
+      const float distance = d.norm();
+      if (!(distance > 1e-6f)) continue;
+      const auto& sum = radius_sums[slice[k]];
+      const Eigen::Vector2f jacobian = -d / distance;
+      normal_matrix += jacobian * jacobian.transpose();
+      gradient += jacobian * (distance - sum.first / static_cast<float>(sum.second));
+    }
+    // A straight row of points (a flat face) leaves the centre undetermined.
+    if (!(std::fabs(normal_matrix.determinant()) > 1e-9f)) return axis_point;
+    centre -= normal_matrix.inverse() * gradient;
+  }
+  if (!centre.allFinite() || (centre - start).norm() > kMaxAxisShift) return axis_point;
+  return axis_point + (centre.x() - start.x()) * u + (centre.y() - start.y()) * v;
+}
+
+std::vector<Eigen::Vector3f> roundPoints(const std::vector<Eigen::Vector3f>& surface, const Eigen::Vector3f& axis_point,
+                                         const Eigen::Vector3f& up) {
+  std::map<long, std::vector<float>> radii;
+  for (const Eigen::Vector3f& p : surface) radii[heightSlice(p, up)].push_back(radialOffset(p, axis_point, up).norm());
+  std::map<long, float> median;
+  for (auto& [slice, values] : radii) median[slice] = quantileOf(values, 0.5f);
+  std::vector<Eigen::Vector3f> round;
+  for (const Eigen::Vector3f& p : surface) {
+    const float m = median[heightSlice(p, up)];
+    if (std::fabs(radialOffset(p, axis_point, up).norm() - m) <= kMaxRoundDeviation * m) round.push_back(p);
+  }
+  return round;
 }
 
 std::vector<Eigen::Vector3f> onePerCell(const std::vector<Eigen::Vector3f>& points, float cell) {
@@ -274,7 +347,9 @@ void CompletionStage::run(PipelineState& state) const {
       std::vector<Eigen::Vector3f> seen;
       seen.reserve(surface.size());
       for (int index : surface) seen.push_back(cloud.points[index].getVector3fMap());
-      const auto turned = revolvedHiddenPoints(seen, *axis, *state.up, params_.revolution_steps, hidden);
+      const Eigen::Vector3f axis_point = refinedRevolutionAxis(seen, *axis, *state.up);
+      const auto turned =
+          revolvedHiddenPoints(roundPoints(seen, axis_point, *state.up), axis_point, *state.up, params_.revolution_steps, hidden);
       points.insert(points.end(), turned.begin(), turned.end());
       ++revolved;
     }
