@@ -2,6 +2,7 @@
 #include "symmetry_segmentation/symmetry/object_size.h"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <limits>
 
@@ -19,6 +20,8 @@ namespace symmetry_segmentation {
 namespace {
 
 constexpr int kPlaneIterations = 200;
+// A thin object's top stands this many table margins over the table (see ObjectSizeStage::run).
+constexpr float kThinObjectMargins = 2.0f;
 // Share of the points left out at either end of an extent.
 constexpr float kTrim = 0.05f;
 
@@ -98,6 +101,49 @@ std::vector<int> largestPlanePoints(const Cloud::ConstPtr& cloud, const std::vec
   return std::vector<int>(inliers.indices.begin(), inliers.indices.end());
 }
 
+TableSightings::TableSightings(const Cloud& input, const PlaneCoefficients& table_plane, float band, float cell)
+    : cell_(cell) {
+  const float norm = table_plane.head<3>().norm();
+  const Eigen::Vector3f normal = table_plane.head<3>() / norm;
+  e1_ = normal.unitOrthogonal();
+  e2_ = normal.cross(e1_);
+  for (const PointT& point : input) {
+    const Eigen::Vector3f p = point.getVector3fMap();
+    const float height = normal.dot(p) + table_plane[3] / norm;
+    if (std::isfinite(height) && std::abs(height) <= band) {
+      const auto [x, y] = cellOf(p);
+      seen_.insert(key(x, y));
+    }
+  }
+}
+
+std::pair<std::int64_t, std::int64_t> TableSightings::cellOf(const Eigen::Vector3f& p) const {
+  return {static_cast<std::int64_t>(std::floor(p.dot(e1_) / cell_)),
+          static_cast<std::int64_t>(std::floor(p.dot(e2_) / cell_))};
+}
+
+float TableSightings::seenShareUnder(const Cloud& cloud, const std::vector<int>& points) const {
+  std::unordered_set<std::int64_t> footprint;
+  for (int i : points) {
+    const auto [x, y] = cellOf(cloud[i].getVector3fMap());
+    footprint.insert(key(x, y));
+  }
+  std::size_t inner = 0, seen = 0;
+  std::unordered_set<std::int64_t> visited;
+  for (int i : points) {
+    const auto [x, y] = cellOf(cloud[i].getVector3fMap());
+    if (!visited.insert(key(x, y)).second) continue;
+    bool surrounded = true;
+    for (std::int64_t dx = -1; dx <= 1 && surrounded; ++dx) {
+      for (std::int64_t dy = -1; dy <= 1 && surrounded; ++dy) surrounded = footprint.count(key(x + dx, y + dy)) > 0;
+    }
+    if (!surrounded) continue;
+    ++inner;
+    if (seen_.count(key(x, y)) > 0) ++seen;
+  }
+  return inner == 0 ? 1.0f : static_cast<float>(seen) / static_cast<float>(inner);
+}
+
 float topHeight(const Cloud& cloud, const std::vector<int>& points, const PlaneCoefficients& table_plane) {
   if (points.empty()) return 0.0f;
   const float norm = table_plane.head<3>().norm();
@@ -111,15 +157,30 @@ void ObjectSizeStage::run(PipelineState& state) const {
   const float plane_distance = onPlaneDistance(voxel_size_);
   const std::size_t before = state.segments.size();
   const bool check_top = params_.min_top_height > 0.0f && state.prepared.has_table;
+  // Made on the first low segment: most scenes have none.
+  std::optional<TableSightings> table_seen;
+  std::size_t thin_kept = 0;
+  const auto tableScrap = [&](const CandidateSegment& segment) {
+    const float top = topHeight(*state.cloud, segment.points, state.prepared.table_plane);
+    if (top >= params_.min_top_height) return false;
+    // Without the input cloud nothing tells a scrap from a thin object: the height decides. So
+    // it does for a top within a margin of the margin (6 sigma of the table's noise): the
+    // table's own surface raised by a few millimetres (a cloth, a warp) hides "the table" too.
+    if (state.scene == nullptr || !state.scene->cloud || top < kThinObjectMargins * state.prepared.table_margin) return true;
+    if (!table_seen) {
+      table_seen.emplace(*state.scene->cloud, state.prepared.table_plane, state.prepared.table_margin, voxel_size_);
+    }
+    if (table_seen->seenShareUnder(*state.cloud, segment.points) >= params_.max_table_seen_share) return true;
+    ++thin_kept;
+    return false;
+  };
   state.segments.erase(std::remove_if(state.segments.begin(), state.segments.end(),
                                       [&](const CandidateSegment& segment) {
-                                        if (check_top && topHeight(*state.cloud, segment.points, state.prepared.table_plane) <
-                                                             params_.min_top_height) {
-                                          return true;
-                                        }
+                                        if (check_top && tableScrap(segment)) return true;
                                         return !hasObjectSize(state.cloud, segment.points, state.up, params_, plane_distance);
                                       }),
                        state.segments.end());
+  state.count("thin_kept", thin_kept);
   state.count("dropped", before - state.segments.size());
 }
 

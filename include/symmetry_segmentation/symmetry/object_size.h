@@ -4,10 +4,15 @@
 // every symmetry test; what gives them away is their size. A segment larger than max_extent
 // along any axis (height over the table, or its footprint's sides), or mostly one plane wider
 // than max_plane_extent, is dropped; so is one whose top is less than min_top_height over the
-// table (a scrap of the table's own depth noise, which a far single view leaves above the margin). Extents leave out 5 % of the points at either end: a few
-// stray points of a neighbour do not make an object large.
+// table (a scrap of the table's own depth noise, which a far single view leaves above the margin),
+// unless it hides the table: under a book or a board lying flat no view sees the table, while
+// the noise's scrap has the table seen all through it. Extents leave out 5 % of the points at
+// either end: a few stray points of a neighbour do not make an object large.
 
+#include <cstdint>
 #include <optional>
+#include <utility>
+#include <unordered_set>
 #include <vector>
 
 #include <Eigen/Core>
@@ -20,6 +25,25 @@ namespace symmetry_segmentation {
 
 /// Height over `table_plane` of the top of `points` (95th percentile of their heights; 0 when empty).
 float topHeight(const Cloud& cloud, const std::vector<int>& points, const PlaneCoefficients& table_plane);
+
+/// Where the table itself was seen: the cells (side `cell`, on a grid in the table's plane) over
+/// which the input cloud has points within `band` of the plane (either side).
+class TableSightings {
+ public:
+  TableSightings(const Cloud& input, const PlaneCoefficients& table_plane, float band, float cell);
+  /// The share of the inner cells of the footprint of `points` (cells whose 8 neighbours hold
+  /// points too) in which the table was seen; 1 when the footprint has no inner cell (scattered
+  /// points are no surface that could hide anything).
+  float seenShareUnder(const Cloud& cloud, const std::vector<int>& points) const;
+
+ private:
+  std::pair<std::int64_t, std::int64_t> cellOf(const Eigen::Vector3f& p) const;
+  static std::int64_t key(std::int64_t x, std::int64_t y) { return (x << 32) ^ (y & 0xffffffff); }
+
+  Eigen::Vector3f e1_, e2_;
+  float cell_;
+  std::unordered_set<std::int64_t> seen_;
+};
 
 /// The extents (m) of `points` of `cloud` along three axes, largest first: with `up`, the height
 /// along it and the sides of the footprint (principal axes in the plane normal to it), else the
