@@ -205,7 +205,13 @@ bool estimateSupportingPlane(const Cloud& cloud, const PreprocessParams& params,
     CandidatePlane candidate;
     pcl::PointIndices inliers;
     if (!largestPlane(remaining, params, min_inliers, candidate, inliers)) break;
-    if (facesUp(candidate)) candidates.push_back(candidate);
+    // A plane next to an earlier, larger one is that surface again: what RANSAC finds through
+    // the rest of its noise and the lowest points standing on it (books lying on the table
+    // tilt it by a degree or two). As a candidate of its own it would take those points from
+    // every candidate's count of what stands on it and could win over the table it lies in.
+    const bool again = std::any_of(candidates.begin(), candidates.end(),
+                                   [&](const CandidatePlane& c) { return samePlane(c.plane, candidate.plane); });
+    if (facesUp(candidate) && !again) candidates.push_back(candidate);
     pcl::ExtractIndices<PointT> extract;
     extract.setInputCloud(remaining);
     extract.setIndices(std::make_shared<pcl::PointIndices>(inliers));
