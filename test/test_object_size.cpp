@@ -135,8 +135,9 @@ std::vector<int> addFlatTop(ss::Cloud& cloud, float x0, float x1, float y0, floa
 }  // namespace
 
 TEST(ObjectSize, AThinObjectHidesTheTableUnderItTheTablesNoiseDoesNot) {
-  // A board 1.2 cm thick (table margin 5 mm) lying at x in [-0.2, -0.05] (the table under it never seen) and a
-  // patch of the table's noise as high at x in [0.05, 0.2] (the table seen all through it).
+  // A board 1.2 cm thick (table margin 5 mm) lying at x in [-0.2, -0.05] (the table under it
+  // never seen) and a patch of the table's noise as high at x in [0.05, 0.2] (the table seen
+  // all through it).
   const auto under_board = [](float x, float y) { return x > -0.2f && x < -0.05f && y > -0.1f && y < 0.1f; };
   ss::Scene input;
   input.cloud = std::make_shared<ss::Cloud>();

@@ -52,6 +52,11 @@ std::pair<float, float> contiguousReach(const std::vector<float>& sorted, float 
   return {reach_low, reach_high};
 }
 
+/// The 2 cm height slice p lies in: a round object's radius is measured per slice.
+long heightSlice(const Eigen::Vector3f& p, const Eigen::Vector3f& up) {
+  return std::lround(std::floor(up.dot(p) / kHeightSlice));
+}
+
 /// The same plane with a unit normal (planes from files or tests may come scaled).
 SymmetryPlane unitPlane(const SymmetryPlane& plane) {
   const float length = plane.normal.norm();
@@ -125,7 +130,7 @@ std::vector<int> revolutionSurface(const Cloud& cloud, const std::vector<int>& p
   // in their middle than at their edges, by up to 40 %).
   std::map<long, std::vector<float>> by_height;
   for (std::size_t k = 0; k < surface.size(); ++k) {
-    by_height[std::lround(std::floor(up.dot(cloud[surface[k]].getVector3fMap()) / kHeightSlice))].push_back(radii[k]);
+    by_height[heightSlice(cloud[surface[k]].getVector3fMap(), up)].push_back(radii[k]);
   }
   std::vector<float> deviations;
   for (auto& [slice, slice_radii] : by_height) {
@@ -143,10 +148,6 @@ std::vector<int> revolutionSurface(const Cloud& cloud, const std::vector<int>& p
 }
 
 namespace {
-long heightSlice(const Eigen::Vector3f& p, const Eigen::Vector3f& up) {
-  return std::lround(std::floor(up.dot(p) / kHeightSlice));
-}
-
 /// The horizontal offset of p from the vertical axis through axis_point.
 Eigen::Vector3f radialOffset(const Eigen::Vector3f& p, const Eigen::Vector3f& axis_point, const Eigen::Vector3f& up) {
   const Eigen::Vector3f offset = p - axis_point;

@@ -164,9 +164,11 @@ void ObjectSizeStage::run(PipelineState& state) const {
     const float top = topHeight(*state.cloud, segment.points, state.prepared.table_plane);
     if (top >= params_.min_top_height) return false;
     // Without the input cloud nothing tells a scrap from a thin object: the height decides. So
-    // it does for a top within a margin of the margin (6 sigma of the table's noise): the
-    // table's own surface raised by a few millimetres (a cloth, a warp) hides "the table" too.
-    if (state.scene == nullptr || !state.scene->cloud || top < kThinObjectMargins * state.prepared.table_margin) return true;
+    // it does for a top under two margins (6 sigma of the table's noise): the table's own
+    // surface raised by a few millimetres (a cloth, a warp) hides "the table" too.
+    if (state.scene == nullptr || !state.scene->cloud || top < kThinObjectMargins * state.prepared.table_margin) {
+      return true;
+    }
     if (!table_seen) {
       table_seen.emplace(*state.scene->cloud, state.prepared.table_plane, state.prepared.table_margin, voxel_size_);
     }

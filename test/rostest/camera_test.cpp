@@ -35,6 +35,7 @@ namespace {
 
 constexpr double kCameraRate = 30.0;
 constexpr double kStreamSeconds = 8.0;
+constexpr double kMaxStreamSeconds = 60.0;
 
 struct Result {
   ros::Time cloud_stamp;
@@ -66,7 +67,8 @@ struct Stream {
   std::vector<double> latencies;
 };
 
-/// Publishes `frames` in turn at kCameraRate for kStreamSeconds, each with a fresh stamp, and
+/// Publishes `frames` in turn at kCameraRate for kStreamSeconds (longer until three results
+/// are back, at most kMaxStreamSeconds), each with a fresh stamp, and
 /// collects the node's answers; prints the rate it kept.
 Stream streamFrames(std::vector<sensor_msgs::PointCloud2> frames, const char* what) {
   ros::NodeHandle nh;
@@ -100,7 +102,16 @@ Stream streamFrames(std::vector<sensor_msgs::PointCloud2> frames, const char* wh
   }
   ros::WallRate rate(kCameraRate);
   const ros::WallTime start = ros::WallTime::now();
-  while (ros::WallTime::now() - start < ros::WallDuration(kStreamSeconds)) {
+  // At least kStreamSeconds; longer (up to kMaxStreamSeconds) until three results are back: on a
+  // loaded machine (a CI run's other jobs) the node's first frames take longer, and how long is a
+  // benchmark's business - a backlog is judged from the latencies below.
+  const auto streaming = [&] {
+    const ros::WallDuration elapsed = ros::WallTime::now() - start;
+    if (elapsed < ros::WallDuration(kStreamSeconds)) return true;
+    std::lock_guard<std::mutex> lock(mutex);
+    return stream.results.size() < 3 && elapsed < ros::WallDuration(kMaxStreamSeconds);
+  };
+  while (streaming()) {
     sensor_msgs::PointCloud2& frame = frames[stream.sent % frames.size()];
     frame.header.stamp = ros::Time::now();
     frame.header.seq = static_cast<uint32_t>(stream.sent++);

@@ -11,8 +11,8 @@
 
 #include <cstdint>
 #include <optional>
-#include <utility>
 #include <unordered_set>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
