@@ -124,15 +124,13 @@ std::pair<std::int64_t, std::int64_t> TableSightings::cellOf(const Eigen::Vector
 
 float TableSightings::seenShareUnder(const Cloud& cloud, const std::vector<int>& points) const {
   std::unordered_set<std::int64_t> footprint;
+  std::vector<std::pair<std::int64_t, std::int64_t>> cells;
   for (int i : points) {
-    const auto [x, y] = cellOf(cloud[i].getVector3fMap());
-    footprint.insert(key(x, y));
+    const auto cell = cellOf(cloud[i].getVector3fMap());
+    if (footprint.insert(key(cell.first, cell.second)).second) cells.push_back(cell);
   }
   std::size_t inner = 0, seen = 0;
-  std::unordered_set<std::int64_t> visited;
-  for (int i : points) {
-    const auto [x, y] = cellOf(cloud[i].getVector3fMap());
-    if (!visited.insert(key(x, y)).second) continue;
+  for (const auto& [x, y] : cells) {
     bool surrounded = true;
     for (std::int64_t dx = -1; dx <= 1 && surrounded; ++dx) {
       for (std::int64_t dy = -1; dy <= 1 && surrounded; ++dy) surrounded = footprint.count(key(x + dx, y + dy)) > 0;
