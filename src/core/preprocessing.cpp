@@ -16,6 +16,8 @@
 #include "symmetry_segmentation/background_surfaces.h"
 #include "symmetry_segmentation/errors.h"
 #include "symmetry_segmentation/organized_normals.h"
+#include "symmetry_segmentation/plane_refinement.h"
+#include "symmetry_segmentation/table_noise.h"
 #include "symmetry_segmentation/voxel_grid.h"
 
 namespace symmetry_segmentation {
@@ -66,6 +68,10 @@ constexpr float kTableConnectVoxels = 3.0f;
 constexpr float kGroupConnectVoxels = 2.0f;
 // A group of points above the table with this share over the table's polygon stands on it.
 constexpr float kStandingShare = 0.5f;
+// The estimated plane's refit: the points this many RANSAC distances from it, judged in squares
+// this large (m) - near enough for the noise within one to be one sensor's at one range.
+constexpr float kRefineBandDistances = 3.0f;
+constexpr float kRefineCell = 0.2f;
 
 bool isFinitePoint(const PointT& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
@@ -230,6 +236,9 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
       const bool single_view =
           scene.sensor_origins.size() == 1 && (scene.cloud->isOrganized() || !scene.has_normals);
       found = estimateSupportingPlane(*coarse, params, sensor, plane, single_view, scene.up);
+      if (found && params.refine_support_plane) {
+        plane = refineToRegionalNoise(*coarse, plane, kRefineBandDistances * params.ransac_distance, kRefineCell);
+      }
     }
     if (found) {
       out.has_table = true;
@@ -264,10 +273,18 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
           }
         }
       }
+      // In a camera frame the noise of the far table reaches past any fixed margin.
+      std::vector<bool> table_noise;
+      if (input.isOrganized() && params.table_noise_window > 1) {
+        std::vector<float> pixel_heights(input.size(), std::numeric_limits<float>::quiet_NaN());
+        for (std::size_t k = 0; k < finite.size(); ++k) pixel_heights[finite[k]] = distances[k];
+        table_noise = tableNoisePixels(input.width, input.height, pixel_heights, out.table_margin,
+                                       params.table_noise_window / 2);
+      }
       std::vector<int> above;
       above.reserve(finite.size());
       for (std::size_t k = 0; k < finite.size(); ++k) {
-        if (distances[k] <= out.table_margin) {
+        if (distances[k] <= out.table_margin || (!table_noise.empty() && table_noise[finite[k]])) {
           if (organized_normals && distances[k] >= -out.table_margin) out.table_band.push_back(finite[k]);
           ++out.dropped.on_table;
         } else if (distances[k] > max_height) {
