@@ -437,24 +437,23 @@ std::size_t keptTableNoise(const syn::GeneratedScene& generated, const ss::Prepr
 }  // namespace
 
 // Seed 2's RealSense frame of the touching kind sees the table out to 1.6 m, where its noise
-// (sigma 1-2 cm) outgrows any margin: RANSAC's plane, refitted within +-1 cm, leaned under the
-// far table, and thousands of its pixels came through as a sparse slab joining the objects on
-// it (2 of 7 found). The plane refit region by region and the pixels judged against the noise
-// around them leave the table's noise out, and the objects in.
+// (sigma 1-2 cm) outgrows any margin: a sixth of its far pixels came through as a sparse slab
+// joining the objects on it (2 of 7 found). With `table_noise_window` (off by default), judged
+// against the noise around them, they stay with the table, and the objects go on.
 TEST(Preprocessing, AFarTablesNoiseInARealSenseFrameIsTheTable) {
   const syn::GeneratedScene generated = cameraFrame(syn::SceneKind::Touching, 2, "realsense", false);
   constexpr float kFar = 1.3f;  // m from the camera
   const TableInCamera table = tableInCamera(generated);
   ss::PreprocessParams params;
-  params.refine_support_plane = false;
   params.table_noise_window = 0;
   const ss::PreprocessedScene before = ss::preprocess(generated.scene, params);
   const std::size_t far_noise_before = keptTableNoise(generated, before, kFar);
   EXPECT_GT(far_noise_before, 1500u) << "the frame no longer shows the case";
-  const ss::PreprocessedScene pre = ss::preprocess(generated.scene, ss::PreprocessParams());
+  params.table_noise_window = 7;
+  const ss::PreprocessedScene pre = ss::preprocess(generated.scene, params);
   ASSERT_TRUE(pre.has_table);
-  EXPECT_GT(pre.table_plane.head<3>().dot(table.up), std::cos(0.2 * M_PI / 180.0));
-  EXPECT_NEAR(pre.table_plane[3], table.offset, 0.003f);
+  EXPECT_GT(pre.table_plane.head<3>().dot(table.up), std::cos(0.5 * M_PI / 180.0));
+  EXPECT_NEAR(pre.table_plane[3], table.offset, 0.005f);
   EXPECT_LT(keptTableNoise(generated, pre, kFar), far_noise_before / 5);
   // Nearer, the margin is 2.5 sigma: a few single pixels of its tail stay, as before.
   EXPECT_LE(keptTableNoise(generated, pre, 0.0f), keptTableNoise(generated, before, 0.0f) - far_noise_before * 4 / 5);

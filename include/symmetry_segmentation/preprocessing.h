@@ -20,8 +20,7 @@ struct PreprocessParams {
   float table_margin = 0.01f;
   bool adaptive_table_margin = true;
   float ransac_distance = 0.01f;
-  bool refine_support_plane = true;
-  int table_noise_window = 7;
+  int table_noise_window = 0;
   int ransac_iterations = 500;
   float normal_radius = 0.03f;
   float organized_normal_smoothing = 10.0f;
@@ -42,13 +41,10 @@ inline void describeParameters(ParameterList<PreprocessParams>& list) {
       .add("adaptive_table_margin", &P::adaptive_table_margin,
            "margin = 3 sigma of the table points' noise (5 mm .. table_margin), so fused clouds keep object bottoms")
       .add("ransac_distance", &P::ransac_distance, 0.001, 0.1, "m", "RANSAC inlier distance when the plane is estimated")
-      .add("refine_support_plane", &P::refine_support_plane,
-           "refit the estimated plane region by region, each within its own noise, so that it does not lean "
-           "where the noise outgrows ransac_distance (a single view's far table)")
       .add("table_noise_window", &P::table_noise_window, 0, 31, "pixels",
            "a camera frame's pixel above the margin is the table's noise where the noise outgrows the margin: the "
            "median heights of this window and of its 3 x 3 neighbours within the margin, the pixel within 3 "
-           "sigma of the window's (3 sigma > margin); 0: off")
+           "sigma of the window's (3 sigma > margin); 0: off (for far views of a noisy sensor: 7)")
       .add("ransac_iterations", &P::ransac_iterations, 1, 1000000, "", "RANSAC iterations when the plane is estimated")
       .add("normal_radius", &P::normal_radius, 0.005, 0.5, "m", "radius for normal estimation when the cloud has none")
       .add("organized_normal_smoothing", &P::organized_normal_smoothing, 0.0, 100.0, "pixels",

@@ -16,7 +16,6 @@
 #include "symmetry_segmentation/background_surfaces.h"
 #include "symmetry_segmentation/errors.h"
 #include "symmetry_segmentation/organized_normals.h"
-#include "symmetry_segmentation/plane_refinement.h"
 #include "symmetry_segmentation/table_noise.h"
 #include "symmetry_segmentation/voxel_grid.h"
 
@@ -68,10 +67,6 @@ constexpr float kTableConnectVoxels = 3.0f;
 constexpr float kGroupConnectVoxels = 2.0f;
 // A group of points above the table with this share over the table's polygon stands on it.
 constexpr float kStandingShare = 0.5f;
-// The estimated plane's refit: the points this many RANSAC distances from it, judged in squares
-// this large (m) - near enough for the noise within one to be one sensor's at one range.
-constexpr float kRefineBandDistances = 3.0f;
-constexpr float kRefineCell = 0.2f;
 
 bool isFinitePoint(const PointT& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
@@ -236,9 +231,6 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
       const bool single_view =
           scene.sensor_origins.size() == 1 && (scene.cloud->isOrganized() || !scene.has_normals);
       found = estimateSupportingPlane(*coarse, params, sensor, plane, single_view, scene.up);
-      if (found && params.refine_support_plane) {
-        plane = refineToRegionalNoise(*coarse, plane, kRefineBandDistances * params.ransac_distance, kRefineCell);
-      }
     }
     if (found) {
       out.has_table = true;
