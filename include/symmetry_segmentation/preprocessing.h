@@ -20,7 +20,6 @@ struct PreprocessParams {
   float table_margin = 0.01f;
   bool adaptive_table_margin = true;
   float ransac_distance = 0.01f;
-  int table_noise_window = 0;
   int ransac_iterations = 500;
   float normal_radius = 0.03f;
   float organized_normal_smoothing = 10.0f;
@@ -41,10 +40,6 @@ inline void describeParameters(ParameterList<PreprocessParams>& list) {
       .add("adaptive_table_margin", &P::adaptive_table_margin,
            "margin = 3 sigma of the table points' noise (5 mm .. table_margin), so fused clouds keep object bottoms")
       .add("ransac_distance", &P::ransac_distance, 0.001, 0.1, "m", "RANSAC inlier distance when the plane is estimated")
-      .add("table_noise_window", &P::table_noise_window, 0, 31, "pixels",
-           "a camera frame's pixel above the margin is the table's noise where the noise outgrows the margin: the "
-           "median heights of this window and of its 3 x 3 neighbours within the margin, the pixel within 3 "
-           "sigma of the window's (3 sigma > margin); 0: off (for far views of a noisy sensor: 7)")
       .add("ransac_iterations", &P::ransac_iterations, 1, 1000000, "", "RANSAC iterations when the plane is estimated")
       .add("normal_radius", &P::normal_radius, 0.005, 0.5, "m", "radius for normal estimation when the cloud has none")
       .add("organized_normal_smoothing", &P::organized_normal_smoothing, 0.0, 100.0, "pixels",
@@ -82,7 +77,7 @@ struct PreprocessedScene {
   /// Finite input points left out, by reason (checked in this order): why an object is missing.
   struct Dropped {
     std::size_t out_of_range = 0;  ///< Farther than max_range from the viewpoint.
-    std::size_t on_table = 0;      ///< Within the table margin, under the table, or its noise.
+    std::size_t on_table = 0;      ///< Within the table margin, or under the table.
     std::size_t too_high = 0;      ///< Higher than max_object_height above it.
     std::size_t off_support = 0;   ///< Not over the table's extent, or a background surface.
     std::size_t outside_roi = 0;   ///< Outside the region of interest.

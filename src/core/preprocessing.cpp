@@ -16,7 +16,6 @@
 #include "symmetry_segmentation/background_surfaces.h"
 #include "symmetry_segmentation/errors.h"
 #include "symmetry_segmentation/organized_normals.h"
-#include "symmetry_segmentation/table_noise.h"
 #include "symmetry_segmentation/voxel_grid.h"
 
 namespace symmetry_segmentation {
@@ -265,18 +264,10 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
           }
         }
       }
-      // In a camera frame the noise of the far table reaches past any fixed margin.
-      std::vector<bool> table_noise;
-      if (input.isOrganized() && params.table_noise_window > 1) {
-        std::vector<float> pixel_heights(input.size(), std::numeric_limits<float>::quiet_NaN());
-        for (std::size_t k = 0; k < finite.size(); ++k) pixel_heights[finite[k]] = distances[k];
-        table_noise = tableNoisePixels(input.width, input.height, pixel_heights, out.table_margin,
-                                       params.table_noise_window / 2);
-      }
       std::vector<int> above;
       above.reserve(finite.size());
       for (std::size_t k = 0; k < finite.size(); ++k) {
-        if (distances[k] <= out.table_margin || (!table_noise.empty() && table_noise[finite[k]])) {
+        if (distances[k] <= out.table_margin) {
           if (organized_normals && distances[k] >= -out.table_margin) out.table_band.push_back(finite[k]);
           ++out.dropped.on_table;
         } else if (distances[k] > max_height) {
