@@ -4,6 +4,7 @@
 // moves to the neighbour.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <numeric>
 #include <random>
@@ -245,6 +246,53 @@ TEST(ColorSeams, APrintedObjectIsNotCutAlongItsPrint) {
   }
   std::vector<ss::CandidateSegment> segments = {everything(cloud, kAcross)};
   EXPECT_EQ(split(segments, cloud), 0u);
+}
+
+namespace {
+
+// Every point of `cloud` within `box` speckled in random colours: print, no uniform region.
+void printOver(ss::Cloud& cloud, const Box& box, unsigned seed) {
+  std::mt19937 random(seed);
+  std::uniform_int_distribution<int> channel(0, 255);
+  for (auto& point : cloud) {
+    if (!box.contains(point.getVector3fMap())) continue;
+    point.r = static_cast<std::uint8_t>(channel(random));
+    point.g = static_cast<std::uint8_t>(channel(random));
+    point.b = static_cast<std::uint8_t>(channel(random));
+  }
+}
+
+}  // namespace
+
+TEST(ColorSeams, APrintedBoxAgainstAPlainOneIsItsOwnObject) {
+  // The short plain box's top meets the tall printed box's side at a concave crease. The
+  // print is a hundred small regions, no large one; taken together it is a part of its own.
+  const Box plain{{-0.08f, -0.04f, 0.0f}, {0.0f, 0.04f, 0.07f}, kRed};
+  const Box printed{{0.0f, -0.04f, 0.0f}, {0.08f, 0.04f, 0.12f}, kBlue};
+  ss::Cloud cloud = boxSurfaces({plain, printed});
+  const std::vector<int> red = pointsOfColor(cloud, kRed);
+  printOver(cloud, Box{{0.0005f, -1.0f, -1.0f}, {1.0f, 1.0f, 1.0f}, kBlue}, 11);
+  ASSERT_LT(red.size(), ss::ColorSeamParams{}.min_coverage * cloud.size());
+  std::vector<ss::CandidateSegment> segments = {everything(cloud, plane(Eigen::Vector3f::UnitY(), 0.0f))};
+  EXPECT_EQ(split(segments, cloud), 1u);
+  ASSERT_EQ(segments.size(), 2u);
+  EXPECT_EQ(segments[0].points, red);
+  std::vector<int> rest;
+  for (int i = 0; i < static_cast<int>(cloud.size()); ++i) {
+    if (!std::binary_search(red.begin(), red.end(), i)) rest.push_back(i);
+  }
+  EXPECT_EQ(segments[1].points, rest);
+}
+
+TEST(ColorSeams, PrintMeetingAPlainPanelFlushStaysOneObject) {
+  // A box on a box of its footprint, the lower plain, the upper printed: to the geometry one
+  // tall box, and a plain panel running flush into print is how packaging is printed.
+  ss::Cloud cloud = boxSurfaces(boxOnBox(kBlue));
+  printOver(cloud, Box{{-1.0f, -1.0f, 0.0605f}, {1.0f, 1.0f, 1.0f}, kBlue}, 13);
+  ASSERT_GT(pointsOfColor(cloud, kRed).size(), 0.3 * cloud.size());
+  std::vector<ss::CandidateSegment> segments = {everything(cloud, kAcross)};
+  EXPECT_EQ(ss::splitAtColorSeams(segments, {}, evidenceOf(cloud), withFlushSeams()), 0u);
+  EXPECT_EQ(segments.size(), 1u);  // both plain, the same stack is two boxes (the test above)
 }
 
 TEST(ColorSeams, OneObjectSeenInSeparatePiecesStaysWhole) {

@@ -20,34 +20,68 @@
 namespace symmetry_segmentation {
 namespace {
 
-// Part per segment position: the large uniform-colour regions, each grown over the segment's
-// links into the small regions around it (print, blended colours at the seam). Empty unless
-// there are two or more and together they make up most of the segment.
-std::vector<int> largeColorRegions(const std::vector<int>& points, const std::vector<Eigen::Vector3f>& lab,
-                                   const std::vector<std::vector<int>>& neighbours, const ColorSeamParams& params,
-                                   int& count) {
+// The colour parts of a segment: per position its part, numbered from 0, the uniform parts
+// first. Empty unless there are two or more and together they cover most of the segment.
+struct ColorParts {
+  std::vector<int> part;
+  int count = 0;
+  int uniform_count = 0;  // parts 0..uniform_count-1 are uniform colour regions, the rest print
+};
+
+// The large uniform-colour regions, and where those leave much of the segment uncovered, the
+// large connected stretches of what is left: print, which is no uniform region at any
+// threshold (a printed box next to a plain one is one large region and a hundred small ones).
+// Each part is then grown over the segment's links into the small regions around it (blended
+// colours at the seam, print within a plain part).
+ColorParts colorParts(const std::vector<int>& points, const std::vector<Eigen::Vector3f>& lab,
+                      const std::vector<std::vector<int>>& neighbours, const ColorSeamParams& params) {
   DisjointSets regions = colorRegions(points, lab, neighbours, params.max_color_difference);
   std::map<int, int> sizes;
   for (std::size_t j = 0; j < points.size(); ++j) ++sizes[regions.find(static_cast<int>(j))];
   const double min_size = std::max<double>(params.min_part_points, params.min_part_fraction * points.size());
+  const double min_covered = params.min_coverage * points.size();
+  ColorParts parts;
   std::map<int, int> part_of_root;
   std::size_t covered = 0;
   for (const auto& [root, size] : sizes) {
     if (size < min_size) continue;
-    part_of_root.emplace(root, static_cast<int>(part_of_root.size()));
+    part_of_root.emplace(root, parts.count++);
     covered += size;
   }
-  count = static_cast<int>(part_of_root.size());
-  if (count < 2 || covered < params.min_coverage * points.size()) return {};
-
+  parts.uniform_count = parts.count;
   std::vector<int> part(points.size(), -1);
-  std::vector<int> frontier;
   for (std::size_t j = 0; j < points.size(); ++j) {
     const auto it = part_of_root.find(regions.find(static_cast<int>(j)));
-    if (it == part_of_root.end()) continue;
-    part[j] = it->second;
-    frontier.push_back(static_cast<int>(j));
+    if (it != part_of_root.end()) part[j] = it->second;
   }
+  if (covered < min_covered) {
+    DisjointSets rest(points.size());
+    forEachLink(points, neighbours, [&](int j, int k) {
+      if (part[j] < 0 && part[k] < 0) rest.unite(j, k);
+    });
+    std::map<int, int> rest_sizes;
+    for (std::size_t j = 0; j < points.size(); ++j) {
+      if (part[j] < 0) ++rest_sizes[rest.find(static_cast<int>(j))];
+    }
+    std::map<int, int> part_of_rest;
+    for (const auto& [root, size] : rest_sizes) {
+      if (size < min_size) continue;
+      part_of_rest.emplace(root, parts.count++);
+      covered += size;
+    }
+    for (std::size_t j = 0; j < points.size(); ++j) {
+      const auto it = part[j] < 0 ? part_of_rest.find(rest.find(static_cast<int>(j))) : part_of_rest.end();
+      if (it != part_of_rest.end()) part[j] = it->second;
+    }
+  }
+  if (parts.count < 2 || covered < min_covered) return {};
+
+  std::vector<int> frontier;
+  for (std::size_t j = 0; j < points.size(); ++j) {
+    if (part[j] >= 0) frontier.push_back(static_cast<int>(j));
+  }
+  std::vector<int> part_sizes(parts.count, 0);
+  for (int j : frontier) ++part_sizes[part[j]];
   // Breadth first, so each small region goes to the large regions nearest over the surface.
   for (std::size_t head = 0; head < frontier.size(); ++head) {
     const int j = frontier[head];
@@ -60,14 +94,13 @@ std::vector<int> largeColorRegions(const std::vector<int>& points, const std::ve
       frontier.push_back(k);
     }
   }
-  // Points no link reaches (a detached speck) join the largest region.
-  const int largest = part_of_root.at(std::max_element(sizes.begin(), sizes.end(), [](const auto& a, const auto& b) {
-                                        return a.second < b.second;
-                                      })->first);
+  // Points no link reaches (a detached speck) join the largest part.
+  const int largest = static_cast<int>(std::max_element(part_sizes.begin(), part_sizes.end()) - part_sizes.begin());
   for (int& p : part) {
     if (p < 0) p = largest;
   }
-  return part;
+  parts.part = std::move(part);
+  return parts;
 }
 
 // Whether a seam runs right across both parts it divides: in some direction within the seam's
@@ -151,13 +184,15 @@ bool standsAlone(const std::vector<int>& piece, const SymmetryPlane& plane, cons
 // parts are different objects where their seam has a good share of concave links (where objects
 // touch: a bowl on a box, a short box's top against its taller neighbour's side) and the
 // smaller is no mere handle, or where it is mostly flat rather than convex (a convex seam is one
-// object's own edge: a can's rim round its lid) and runs right across both. Other seams join
+// object's own edge: a can's rim round its lid) and runs right across both - between uniform
+// parts only: print meeting a plain panel flush is the look of most printed packaging, and
+// says nothing of where an object ends. Other seams join
 // one object's differently coloured parts; a part with no seam to any other (the pieces of one
 // box seen either side of a board) joins the part closest to it in colour.
 int objectsAtColorSeams(const std::vector<int>& points, const std::vector<Eigen::Vector3f>& lab, const Cloud& cloud,
                        const std::vector<std::vector<int>>& neighbours, const SymmetryPlane& plane,
                        const std::vector<CandidateSegment>& found, const SceneEvidence& evidence,
-                       const ColorSeamParams& params, std::vector<int>& part, int count) {
+                       const ColorSeamParams& params, std::vector<int>& part, int count, int uniform_count) {
   const float min_flat_cos = std::cos(params.flat_link_angle_deg * static_cast<float>(M_PI) / 180.0f);
   struct Seam {
     int links = 0;
@@ -199,7 +234,8 @@ int objectsAtColorSeams(const std::vector<int>& points, const std::vector<Eigen:
     const bool touching = concave_links >= params.min_seam_links &&
                           concave_links >= params.min_concave_seam_fraction * seam.links &&
                           large_or_alone(pair.first) && large_or_alone(pair.second);
-    const bool flat = params.split_flush_seams && seam.flat_links >= params.min_seam_links &&
+    const bool uniform = pair.first < uniform_count && pair.second < uniform_count;
+    const bool flat = params.split_flush_seams && uniform && seam.flat_links >= params.min_seam_links &&
                       seam.flat_links >= params.min_flat_seam_fraction * (seam.flat_links + seam.convex_links);
     if (touching || (flat && seamSpansBoth(seam.ends, points, part, pair.first, pair.second, cloud, params.min_seam_span) &&
                      stands_alone(pair.first) && stands_alone(pair.second))) {
@@ -280,12 +316,13 @@ std::size_t splitAtColorSeams(std::vector<CandidateSegment>& segments, const std
   const std::size_t original = segments.size();
   for (std::size_t i = 0; i < original; ++i) {
     const std::vector<int>& points = segments[i].points;
-    int count = 0;
     std::vector<Eigen::Vector3f> lab(points.size());
     for (std::size_t j = 0; j < points.size(); ++j) lab[j] = toLab(cloud[points[j]]);
-    std::vector<int> part = largeColorRegions(points, lab, neighbours, params, count);
-    if (part.empty()) continue;
-    count = objectsAtColorSeams(points, lab, cloud, neighbours, segments[i].plane, found, evidence, params, part, count);
+    ColorParts parts = colorParts(points, lab, neighbours, params);
+    if (parts.part.empty()) continue;
+    std::vector<int>& part = parts.part;
+    const int count = objectsAtColorSeams(points, lab, cloud, neighbours, segments[i].plane, found, evidence, params,
+                                          part, parts.count, parts.uniform_count);
     if (count < 2) continue;
     std::vector<std::vector<int>> pieces(count);
     for (std::size_t j = 0; j < points.size(); ++j) pieces[part[j]].push_back(points[j]);

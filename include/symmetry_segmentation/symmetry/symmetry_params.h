@@ -360,7 +360,7 @@ inline void describeParameters(ParameterList<ColorSeamParams>& list) {
   list.add("max_color_difference", &P::max_color_difference, 0.1, 200.0, "CIELAB",
            "linked points closer in colour (lightness at half weight) are one colour region")
       .add("min_part_fraction", &P::min_part_fraction, 0.0, 1.0, "", "regions with this share of the segment are candidate objects")
-      .add("min_coverage", &P::min_coverage, 0.0, 1.0, "", "those regions cover this share, else the object is printed")
+      .add("min_coverage", &P::min_coverage, 0.0, 1.0, "", "those regions cover this share, else what they leave is print, its large linked stretches parts too (split from others at concave creases only)")
       .add("min_flat_seam_fraction", &P::min_flat_seam_fraction, 0.0, 1.0, "",
            "share of the flat and convex links between two regions that is flat for a flush seam")
       .add("min_seam_links", &P::min_seam_links, 1, 100000, "links", "regions linked by fewer links do not meet")
