@@ -44,10 +44,11 @@ ss::CandidateSegment segmentWithPlane(std::vector<int> points, float plane_id) {
   return s;
 }
 
-// The plane with distance 1 explains anything; distance 2 only what has at most 6 points.
+// The plane with distance 1 explains anything; distance 2 only what has at most 6 points;
+// distance 3 sends a twentieth of anything into free space.
 ss::SegmentScores scoreByPlane(const std::vector<int>& points, const ss::SymmetryPlane& plane) {
   ss::SegmentScores scores;
-  scores.occlusion = plane.distance == 1.0f || points.size() <= 6 ? 1.0f : 0.5f;
+  scores.occlusion = plane.distance == 1.0f || points.size() <= 6 ? 1.0f : plane.distance == 3.0f ? 0.95f : 0.5f;
   scores.smoothness = 0.0f;
   return scores;
 }
@@ -85,7 +86,7 @@ TEST(IslandSegments, AnIslandIsProposedWithThePlaneThatExplainsItWhole) {
   // that explains the whole island; nothing lies on the second island.
   const std::vector<ss::CandidateSegment> segments = {segmentWithPlane(range(0, 5), 2.0f),
                                                       segmentWithPlane(range(4, 9), 1.0f)};
-  const auto proposed = ss::explainedIslands(islands, segments, scoredByPlane(), filter(), {});
+  const auto proposed = ss::explainedIslands(islands, segments, {}, scoredByPlane(), filter(), {});
   ASSERT_EQ(proposed.size(), 1u);
   EXPECT_EQ(proposed[0].points, range(0, 9));
   EXPECT_EQ(proposed[0].plane.distance, 1.0f);
@@ -98,5 +99,29 @@ TEST(IslandSegments, AnIslandNoPlaneExplainsIsNotProposed) {
   // (its plane would explain anything) does not lend its plane.
   const std::vector<ss::CandidateSegment> segments = {segmentWithPlane(range(0, 5), 2.0f),
                                                       segmentWithPlane(range(8, 14), 1.0f)};
-  EXPECT_TRUE(ss::explainedIslands(islands, segments, scoredByPlane(), filter(), {}).empty());
+  EXPECT_TRUE(ss::explainedIslands(islands, segments, {}, scoredByPlane(), filter(), {}).empty());
+}
+
+TEST(IslandSegments, AnIslandNothingElseCoversNeedsLessOfItsPlane) {
+  const std::vector<std::vector<int>> islands = {range(0, 9)};
+  ss::SymmetryFilterParams strict = filter();
+  strict.s_occl = 0.99f;
+  const ss::IslandSegmentParams params;  // min_occlusion_alone 0.9
+  // Its only plane sends a twentieth of it into free space: short of the filter, but nothing
+  // else accounts for the island.
+  const std::vector<ss::CandidateSegment> slightly_off = {segmentWithPlane(range(0, 9), 3.0f)};
+  const auto alone = ss::explainedIslands(islands, slightly_off, {}, scoredByPlane(), strict, params);
+  ASSERT_EQ(alone.size(), 1u);
+  EXPECT_EQ(alone[0].points, range(0, 9));
+  EXPECT_FLOAT_EQ(alone[0].scores.occlusion, 0.95f);
+  // A reported segment covering half of it already accounts for it.
+  const std::vector<ss::CandidateSegment> reported = {segmentWithPlane(range(0, 4), 1.0f)};
+  EXPECT_TRUE(ss::explainedIslands(islands, slightly_off, reported, scoredByPlane(), strict, params).empty());
+  EXPECT_EQ(ss::explainedIslands(islands, slightly_off, {segmentWithPlane(range(0, 3), 1.0f)}, scoredByPlane(),
+                                 strict, params).size(),
+            1u)
+      << "four of ten points is less than half";
+  // A plane that sends half of it into free space says it is no object, covered or not.
+  const std::vector<ss::CandidateSegment> contradicted = {segmentWithPlane(range(0, 9), 2.0f)};
+  EXPECT_TRUE(ss::explainedIslands(islands, contradicted, {}, scoredByPlane(), strict, params).empty());
 }

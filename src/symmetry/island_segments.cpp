@@ -1,6 +1,8 @@
 // Stage 12, island_segments: islands that one plane explains (see the header for why).
 #include "symmetry_segmentation/symmetry/island_segments.h"
 
+#include <algorithm>
+
 #include "symmetry_segmentation/symmetry/pipeline_state.h"
 #include "symmetry_segmentation/symmetry/sorted_indices.h"
 
@@ -8,6 +10,7 @@ namespace symmetry_segmentation {
 
 std::vector<CandidateSegment> explainedIslands(const std::vector<std::vector<int>>& islands,
                                                const std::vector<CandidateSegment>& segments,
+                                               const std::vector<CandidateSegment>& reported,
                                                const SceneEvidence& evidence, const SymmetryFilterParams& filter,
                                                const IslandSegmentParams& params) {
   std::vector<CandidateSegment> result;
@@ -33,14 +36,24 @@ std::vector<CandidateSegment> explainedIslands(const std::vector<std::vector<int
         found = true;
       }
     }
-    if (found && passesFilterAfterOffsetFit(best, evidence, filter)) result.push_back(std::move(best));
+    if (!found) continue;
+    if (passesFilterAfterOffsetFit(best, evidence, filter)) {
+      result.push_back(std::move(best));
+      continue;
+    }
+    const bool covered = std::any_of(reported.begin(), reported.end(), [&](const CandidateSegment& segment) {
+      return 2 * intersectionSize(segment.points, island) >= island.size();
+    });
+    SymmetryFilterParams alone = filter;
+    alone.s_occl = params.min_occlusion_alone;
+    if (!covered && passesFilter(best, alone)) result.push_back(std::move(best));
   }
   return result;
 }
 
 void IslandSegmentStage::run(PipelineState& state) const {
   std::vector<CandidateSegment> explained =
-      explainedIslands(state.islands, state.candidates, *state.evidence, filter_, params_);
+      explainedIslands(state.islands, state.candidates, state.segments, *state.evidence, filter_, params_);
   state.count("added", explained.size());
   for (CandidateSegment& island : explained) state.segments.push_back(std::move(island));
 }

@@ -260,13 +260,16 @@ inline void describeParameters(ParameterList<SymmetryFilterParams>& list) {
 struct IslandSegmentParams {
   float min_share_on_island = 0.5f;
   float min_share_of_island = 0.3f;
+  float min_occlusion_alone = 0.9f;
 };
 
 inline void describeParameters(ParameterList<IslandSegmentParams>& list) {
   list.add("min_share_on_island", &IslandSegmentParams::min_share_on_island, 0.0, 1.0, "",
            "a segment lends its plane to an island it lies on by this share...")
       .add("min_share_of_island", &IslandSegmentParams::min_share_of_island, 0.0, 1.0, "",
-           "...and covers this share of (a piece of the object, not a detail of many)");
+           "...and covers this share of (a piece of the object, not a detail of many)")
+      .add("min_occlusion_alone", &IslandSegmentParams::min_occlusion_alone, 0.0, 1.0, "",
+           "an island no segment covers half of is one when its plane scores this occlusion (else the filter's s_occl)");
 }
 
 /// Stage mirror_twins: two like objects the plane between them mirrors onto each other.
