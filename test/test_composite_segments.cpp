@@ -254,3 +254,42 @@ TEST(CompositeSegments, APathThroughASmoothedConcaveCornerDoesNotJoinTheParts) {
   segments = {whole};
   EXPECT_EQ(ss::splitCompositeSegments(segments, parts, corner_turning(15.0f), params), 0u);
 }
+
+// Seen from where the end face of its slab is hidden, an L-shaped block is to the geometry a low
+// box against a tall one; only its one colour says it is one object. Two objects of different
+// colours still part; a cloud without colour (use_color false) decides on the geometry alone.
+TEST(CompositeSegments, PartsOfOneColourAreOneObjectsParts) {
+  ss::Cloud cloud(static_cast<uint32_t>(kPoints), 1);
+  for (auto& point : cloud) {
+    point.r = 200;
+    point.g = 40;
+    point.b = 40;
+  }
+  const std::vector<ss::CandidateSegment> parts = {segment(0, 59, 2.0f), segment(60, 99, 3.0f)};
+  ss::CompositeSegmentParams params;
+  params.min_seam_links = 1;
+  params.use_color = true;
+  auto split = [&](const ss::Cloud& colored, const ss::CompositeSegmentParams& with) {
+    test_support::FakeEvidence scene(colored, chainNeighbours());
+    scene.crease = creaseAtSeam;
+    scene.lands_on = mirrorWithinObject;
+    scene.score = markedScores;
+    std::vector<ss::CandidateSegment> segments = {segment(0, 99, 1.0f)};
+    return ss::splitCompositeSegments(segments, parts, scene, with);
+  };
+  EXPECT_EQ(split(cloud, params), 0u) << "one colour: one object";
+  ss::CompositeSegmentParams without_color = params;
+  without_color.use_color = false;
+  EXPECT_EQ(split(cloud, without_color), 1u);
+  ss::Cloud two_colors = cloud;
+  for (int i = kSeam; i < kPoints; ++i) {
+    two_colors[i].r = 40;
+    two_colors[i].g = 120;
+    two_colors[i].b = 200;
+  }
+  EXPECT_EQ(split(two_colors, params), 1u) << "two colours: two objects";
+  // Nearly one colour (a few CIELAB units: shading, print) is one colour.
+  ss::Cloud shaded = cloud;
+  for (int i = kSeam; i < kPoints; ++i) shaded[i].r = 203;
+  EXPECT_EQ(split(shaded, params), 0u);
+}

@@ -6,6 +6,7 @@
 #include <optional>
 #include <utility>
 
+#include "color_lab.h"
 #include "symmetry_segmentation/symmetry/pipeline_state.h"
 #include "symmetry_segmentation/symmetry/sorted_indices.h"
 
@@ -89,12 +90,34 @@ bool mirroredOntoOther(const std::vector<int>& part, const std::vector<int>& oth
   return matched > 0 && swapped > params.max_swapped_fraction * matched;
 }
 
+/// The mean colour (CIELAB) of the points of `part` not in `other`.
+Eigen::Vector3f meanColorApart(const std::vector<int>& part, const std::vector<int>& other, const Cloud& cloud) {
+  Eigen::Vector3f sum = Eigen::Vector3f::Zero();
+  int count = 0;
+  for (int p : part) {
+    if (contains(other, p)) continue;
+    sum += toLab(cloud[p]);
+    ++count;
+  }
+  return count > 0 ? Eigen::Vector3f(sum / static_cast<float>(count)) : sum;
+}
+
+/// Whether parts a and b look like one object's: one colour (their means closer than
+/// min_color_difference), in a cloud with colour.
+bool oneColor(const std::vector<int>& a, const std::vector<int>& b, const SceneEvidence& evidence,
+              const CompositeSegmentParams& params) {
+  if (!params.use_color || !(params.min_color_difference > 0.0f)) return false;
+  const Cloud& cloud = evidence.cloud();
+  return colorDifference(meanColorApart(a, b, cloud), meanColorApart(b, a, cloud)) < params.min_color_difference;
+}
+
 /// Whether parts a and b of `whole` are two objects: apart or meeting at a concave seam (at least
-/// `min_crease_fraction` of their links creased), each mirrored onto itself by `whole`'s plane.
+/// `min_crease_fraction` of their links creased), each mirrored onto itself by `whole`'s plane,
+/// not of one colour.
 bool twoObjects(const CandidateSegment& whole, const std::vector<int>& a, const std::vector<int>& b,
                 float min_crease_fraction, const std::vector<std::vector<int>>& neighbours, const Creases& crease,
                 const SceneEvidence& evidence, const CompositeSegmentParams& params) {
-  return apartOrCreased(a, b, neighbours, crease, min_crease_fraction, params) &&
+  return !oneColor(a, b, evidence, params) && apartOrCreased(a, b, neighbours, crease, min_crease_fraction, params) &&
          !mirroredOntoOther(a, b, whole.plane, evidence, params) && !mirroredOntoOther(b, a, whole.plane, evidence, params);
 }
 
@@ -201,7 +224,9 @@ void CompositeStage::run(PipelineState& state) const {
   for (const CandidateSegment& candidate : state.candidates) {
     if (!candidate.points.empty()) parts.push_back(candidate);
   }
-  state.count("split", splitCompositeSegments(state.segments, parts, *state.evidence, params_));
+  CompositeSegmentParams params = params_;
+  params.use_color = state.has_color;
+  state.count("split", splitCompositeSegments(state.segments, parts, *state.evidence, params));
 }
 
 }  // namespace symmetry_segmentation

@@ -3,7 +3,9 @@
 // centred on a box), and its cut takes both and, being larger, wins deduplication. A segment that
 // two segments found alone make up (or one and the rest), apart or meeting only at concave creases
 // and each mirrored onto itself by its plane, is replaced by the two; parts that also run on into
-// each other without a crease (an L-shaped block's slab and upright) stay one object.
+// each other without a crease (an L-shaped block's slab and upright) stay one object, and so do
+// parts of one colour: seen from where the slab's end face is hidden, an L-shaped block is to the
+// geometry a low box against a tall one, and only its one colour says it is one object.
 #include <vector>
 
 #include "symmetry_segmentation/symmetry/scene_evidence.h"
@@ -18,13 +20,14 @@ namespace symmetry_segmentation {
 /// `parts` and the rest of it (an object seen in pieces around the other is never found whole on
 /// its own; the rest keeps the larger segment's plane and is scored anew). The two must be apart
 /// or meet at a concave seam (links crossing creases sharper than params.crease_angle_deg; a rest
-/// at creases only), and the larger segment's plane must mirror each onto itself. Returns how
+/// at creases only), the larger segment's plane must mirror each onto itself, and where
+/// params.use_color their mean colours must differ by params.min_color_difference. Returns how
 /// many were replaced.
 std::size_t splitCompositeSegments(std::vector<CandidateSegment>& segments, const std::vector<CandidateSegment>& parts,
                                    const SceneEvidence& evidence, const CompositeSegmentParams& params);
 
 /// The stage: splitCompositeSegments with the segments and every candidate (filtered out or
-/// not) as the parts.
+/// not) as the parts; colour where the scene has it.
 class CompositeStage : public Stage {
  public:
   explicit CompositeStage(const CompositeSegmentParams& params) : params_(params) {}

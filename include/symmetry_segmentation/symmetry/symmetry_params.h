@@ -300,6 +300,9 @@ struct CompositeSegmentParams {
   float min_rest_crease_fraction = 0.9f;
   int min_seam_links = 5;
   float max_swapped_fraction = 0.3f;
+  float min_color_difference = 5.0f;
+  // From the scene: whether its points carry colour. Not a parameter.
+  bool use_color = false;
 };
 
 inline void describeParameters(ParameterList<CompositeSegmentParams>& list) {
@@ -319,7 +322,9 @@ inline void describeParameters(ParameterList<CompositeSegmentParams>& list) {
            "the same for a part not found alone (a flush face running on makes it fall short)")
       .add("min_seam_links", &P::min_seam_links, 1, 100000, "links", "parts linked by fewer links are apart")
       .add("max_swapped_fraction", &P::max_swapped_fraction, 0.0, 1.0, "",
-           "parts whose matched reflections land on each other more are mirror halves of one object");
+           "parts whose matched reflections land on each other more are mirror halves of one object")
+      .add("min_color_difference", &P::min_color_difference, 0.0, 200.0, "CIELAB",
+           "parts whose mean colours differ less are one object's (an L-shaped block's slab and upright); clouds with colour only, 0: off");
 }
 
 /// Stage nested: an object the cut glued onto another object's segment.
