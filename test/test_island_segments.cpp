@@ -99,14 +99,16 @@ TEST(IslandSegments, AnIslandNoPlaneExplainsIsNotProposed) {
   // (its plane would explain anything) does not lend its plane.
   const std::vector<ss::CandidateSegment> segments = {segmentWithPlane(range(0, 5), 2.0f),
                                                       segmentWithPlane(range(8, 14), 1.0f)};
-  EXPECT_TRUE(ss::explainedIslands(islands, segments, {}, scoredByPlane(), filter(), {}).empty());
+  ss::IslandSegmentParams no_relief;  // an island alone asks what the filter asks
+  no_relief.alone_free_factor = 1.0f;
+  EXPECT_TRUE(ss::explainedIslands(islands, segments, {}, scoredByPlane(), filter(), no_relief).empty());
 }
 
 TEST(IslandSegments, AnIslandNothingElseCoversNeedsLessOfItsPlane) {
   const std::vector<std::vector<int>> islands = {range(0, 9)};
   ss::SymmetryFilterParams strict = filter();
   strict.s_occl = 0.99f;
-  const ss::IslandSegmentParams params;  // min_occlusion_alone 0.9
+  const ss::IslandSegmentParams params;  // alone_free_factor 10: occlusion above 0.9
   // Its only plane sends a twentieth of it into free space: short of the filter, but nothing
   // else accounts for the island.
   const std::vector<ss::CandidateSegment> slightly_off = {segmentWithPlane(range(0, 9), 3.0f)};
@@ -114,6 +116,10 @@ TEST(IslandSegments, AnIslandNothingElseCoversNeedsLessOfItsPlane) {
   ASSERT_EQ(alone.size(), 1u);
   EXPECT_EQ(alone[0].points, range(0, 9));
   EXPECT_FLOAT_EQ(alone[0].scores.occlusion, 0.95f);
+  // The allowance scales with the filter's: one that keeps nothing keeps no island either.
+  ss::SymmetryFilterParams keeps_nothing = strict;
+  keeps_nothing.s_occl = 1.0f;
+  EXPECT_TRUE(ss::explainedIslands(islands, slightly_off, {}, scoredByPlane(), keeps_nothing, params).empty());
   // A reported segment covering half of it already accounts for it.
   const std::vector<ss::CandidateSegment> reported = {segmentWithPlane(range(0, 4), 1.0f)};
   EXPECT_TRUE(ss::explainedIslands(islands, slightly_off, reported, scoredByPlane(), strict, params).empty());

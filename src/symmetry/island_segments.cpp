@@ -45,7 +45,7 @@ std::vector<CandidateSegment> explainedIslands(const std::vector<std::vector<int
       return 2 * intersectionSize(segment.points, island) >= island.size();
     });
     SymmetryFilterParams alone = filter;
-    alone.s_occl = params.min_occlusion_alone;
+    alone.s_occl = 1.0f - params.alone_free_factor * (1.0f - filter.s_occl);
     if (!covered && passesFilter(best, alone)) result.push_back(std::move(best));
   }
   return result;

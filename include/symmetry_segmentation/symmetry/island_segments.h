@@ -5,8 +5,9 @@
 // handle) - can still be reported whole; deduplication then prefers it to its pieces. An island
 // no segment covers half of needs less: its best plane a little off (an L-shaped block whose
 // only plane is its horizontal mid-plane, a fused scene's noise), it is an object nothing else
-// accounts for, set apart from everything by the islands' gap; only a plane that sends more than
-// a tenth of it into free space says it is none (a wall's scrap, a shadow's speckle).
+// accounts for, set apart from everything by the islands' gap; only a plane that sends many times
+// the filter's share into free space says it is none (a wall's scrap, a shadow's speckle). The
+// share scales with the filter's s_occl, so a stricter filter is stricter here too.
 #include <vector>
 
 #include "symmetry_segmentation/symmetry/scene_evidence.h"
@@ -19,7 +20,8 @@ namespace symmetry_segmentation {
 /// For each island: the plane among `segments`' planes (of segments lying mostly on the island
 /// and covering a good share of it) under which the island scores best; the island with that
 /// plane when it passes `filter` (after the filter's plane offset search), or when none of
-/// `reported` covers half of it and it scores params.min_occlusion_alone and passes the rest.
+/// `reported` covers half of it and it passes `filter` with params.alone_free_factor times the
+/// filter's share of reflections into free space (1 - s_occl).
 std::vector<CandidateSegment> explainedIslands(const std::vector<std::vector<int>>& islands,
                                                const std::vector<CandidateSegment>& segments,
                                                const std::vector<CandidateSegment>& reported,

@@ -260,7 +260,7 @@ inline void describeParameters(ParameterList<SymmetryFilterParams>& list) {
 struct IslandSegmentParams {
   float min_share_on_island = 0.5f;
   float min_share_of_island = 0.3f;
-  float min_occlusion_alone = 0.9f;
+  float alone_free_factor = 10.0f;
 };
 
 inline void describeParameters(ParameterList<IslandSegmentParams>& list) {
@@ -268,8 +268,8 @@ inline void describeParameters(ParameterList<IslandSegmentParams>& list) {
            "a segment lends its plane to an island it lies on by this share...")
       .add("min_share_of_island", &IslandSegmentParams::min_share_of_island, 0.0, 1.0, "",
            "...and covers this share of (a piece of the object, not a detail of many)")
-      .add("min_occlusion_alone", &IslandSegmentParams::min_occlusion_alone, 0.0, 1.0, "",
-           "an island no segment covers half of is one when its plane scores this occlusion (else the filter's s_occl)");
+      .add("alone_free_factor", &IslandSegmentParams::alone_free_factor, 1.0, 100.0, "",
+           "an island no segment covers half of may send this many times the filter's share (1 - s_occl) of its reflections into free space");
 }
 
 /// Stage mirror_twins: two like objects the plane between them mirrors onto each other.
