@@ -185,10 +185,10 @@ bool standsAlone(const std::vector<int>& piece, const SymmetryPlane& plane, cons
 // touch: a bowl on a box, a short box's top against its taller neighbour's side) and the
 // smaller is no mere handle, or where it is mostly flat rather than convex (a convex seam is one
 // object's own edge: a can's rim round its lid) and runs right across both - between uniform
-// parts only: print meeting a plain panel flush is the look of most printed packaging, and
-// says nothing of where an object ends. Other seams join
-// one object's differently coloured parts; a part with no seam to any other (the pieces of one
-// box seen either side of a board) joins the part closest to it in colour.
+// parts only: print meeting a plain panel flush is the look of most printed packaging, and says
+// nothing of where an object ends. Other seams join one object's differently coloured parts; a
+// part with no seam to any other (the pieces of one box seen either side of a board) joins the
+// part closest to it in colour.
 int objectsAtColorSeams(const std::vector<int>& points, const std::vector<Eigen::Vector3f>& lab, const Cloud& cloud,
                        const std::vector<std::vector<int>>& neighbours, const SymmetryPlane& plane,
                        const std::vector<CandidateSegment>& found, const SceneEvidence& evidence,

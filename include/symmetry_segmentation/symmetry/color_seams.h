@@ -5,13 +5,13 @@
 // crease is split into them; colour edges on convex edges (a lid) or in print keep it whole.
 // Print is no uniform region: where the large regions leave much of the segment, the large
 // linked stretches of the rest are parts too (a printed box against a plain one), parted from
-// others at concave creases only (see below). A
-// part much smaller than the rest (a small box beside a large one, or a handle) counts only when
-// it stands alone: mirrored onto itself by the segment's plane, and more than one flat face.
-// Flat seams (flush boxes of one depth, a box on a box of its footprint) split only between
-// uniform parts that each stand alone: on real frames a flat colour seam is far more often one object
-// printed in two colours (OSD learn: split at every flat seam, 12 of 45 frames lost an object
-// and none gained one; split between parts that stand alone, none changes). Needs colour.
+// others at concave creases only. A part much smaller than the rest (a small box beside a large
+// one, or a handle) counts only when it stands alone: mirrored onto itself by the segment's
+// plane, and more than one flat face. Flat seams (flush boxes of one depth, a box on a box of
+// its footprint) split only between uniform parts that each stand alone: on real frames a flat
+// colour seam is far more often one object printed in two colours (OSD learn: split at every
+// flat seam, 12 of 45 frames lost an object and none gained one; split between parts that stand
+// alone, none changes). Needs colour.
 #include <vector>
 
 #include "symmetry_segmentation/symmetry/scene_evidence.h"
