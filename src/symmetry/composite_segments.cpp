@@ -117,8 +117,9 @@ bool oneColor(const std::vector<int>& a, const std::vector<int>& b, const SceneE
 bool twoObjects(const CandidateSegment& whole, const std::vector<int>& a, const std::vector<int>& b,
                 float min_crease_fraction, const std::vector<std::vector<int>>& neighbours, const Creases& crease,
                 const SceneEvidence& evidence, const CompositeSegmentParams& params) {
-  return !oneColor(a, b, evidence, params) && apartOrCreased(a, b, neighbours, crease, min_crease_fraction, params) &&
-         !mirroredOntoOther(a, b, whole.plane, evidence, params) && !mirroredOntoOther(b, a, whole.plane, evidence, params);
+  return apartOrCreased(a, b, neighbours, crease, min_crease_fraction, params) &&
+         !mirroredOntoOther(a, b, whole.plane, evidence, params) && !mirroredOntoOther(b, a, whole.plane, evidence, params) &&
+         !oneColor(a, b, evidence, params);  // last: the colour means convert every point
 }
 
 /// The two objects `whole` is made of: two segments of `parts` covering it, else one segment of
