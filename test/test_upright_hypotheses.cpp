@@ -125,6 +125,43 @@ TEST(UprightHypotheses, AMugsHandleOrientsThePlaneThroughItsAxis) {
       << "the handle orients the plane even without its outer half (else this test shows nothing)";
 }
 
+TEST(UprightHypotheses, AHandleFittedAsAThinCylinderOfItsOwnStillOrientsTheMugsPlane) {
+  // A real handle's front is curved: it gets a thin upright axis of its own. Its points must
+  // still count with the mug's column (a part held against its side, not a round neighbour
+  // whose side is its own business), else nothing contradicts the bisector of the seen arc.
+  ss::Cloud cloud;
+  std::vector<int> labels;
+  const Eigen::Vector3f axis(0.1f, 0.2f, 0.0f);
+  const float radius = 0.04f;
+  const float pi = static_cast<float>(M_PI);
+  addCylinderSide(cloud, labels, axis, radius, 0.1f, -pi / 2.0f - 1.75f, -pi / 2.0f + 1.75f, 1, 1);
+  const float handle_angle = -40.0f * pi / 180.0f;
+  const Eigen::Vector3f out(std::cos(handle_angle), std::sin(handle_angle), 0.0f);
+  const Eigen::Vector3f across = kUp.cross(out);
+  const float handle_radius = 0.012f;
+  const Eigen::Vector3f handle_axis = axis + (radius + 0.018f) * out;
+  for (float a = -pi; a <= 0.0f; a += 0.25f) {  // its half facing the camera (-y)
+    const Eigen::Vector3f normal(std::cos(a), std::sin(a), 0.0f);
+    for (float z = 0.02f; z <= 0.08f; z += 0.005f) {
+      cloud.push_back(point(handle_axis + handle_radius * normal + Eigen::Vector3f(0, 0, z), normal));
+      labels.push_back(2);
+    }
+  }
+  auto evidence = landing(cloud);
+  evidence.free_landing = [&](const Eigen::Vector3f& p) {
+    return Eigen::Vector2f(p.x() - axis.x(), p.y() - axis.y()).norm() > radius + 0.02f;
+  };
+  const auto hypotheses = ss::uprightHypotheses(evidence, labels, kUp, ss::UprightHypothesisParams{});
+  ASSERT_TRUE(std::any_of(hypotheses.begin(), hypotheses.end(), [&](const ss::SymmetryHypothesis& h) {
+    return !h.anchor.empty() && distanceToPlane(h.plane, handle_axis) < 0.003f && labels[h.anchor.front()] == 2;
+  })) << "the handle has no axis of its own (else this test shows nothing)";
+  const ss::SymmetryPlane handle_plane{across, -across.dot(axis)};
+  EXPECT_TRUE(std::any_of(hypotheses.begin(), hypotheses.end(), [&](const ss::SymmetryHypothesis& h) {
+    return !h.anchor.empty() && labels[h.anchor.front()] == 1 && ss::planeAngleDeg(h.plane, handle_plane) < 8.0f &&
+           distanceToPlane(h.plane, axis) < 0.003f;
+  })) << "no plane through the mug's axis contains its handle";
+}
+
 TEST(UprightHypotheses, TwoTouchingCansMergedIntoOneSurfaceProposeAPlaneThroughEachAxis) {
   // Their sides meet with equal normals and supervoxel merging makes one surface of both. Each
   // can gets a plane through its own axis, anchored on its own side, and not the plane through

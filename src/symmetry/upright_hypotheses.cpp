@@ -188,14 +188,37 @@ float distanceFromAxis(const Eigen::Vector3f& p, const VerticalAxis& axis, const
   return offset.norm();
 }
 
-/// Whether p lies on the surface of revolution of another axis and not on that of `axis`.
-bool onAnotherRoundSurface(const Eigen::Vector3f& p, const VerticalAxis& axis, const std::vector<VerticalAxis>& other_axes,
+/// The lowest and highest of `points` along `up`.
+std::pair<float, float> heightRange(const Cloud& cloud, const std::vector<int>& points, const Eigen::Vector3f& up) {
+  float low = std::numeric_limits<float>::max(), high = -std::numeric_limits<float>::max();
+  for (int i : points) {
+    const float height = up.dot(cloud.points[i].getVector3fMap());
+    low = std::min(low, height);
+    high = std::max(high, height);
+  }
+  return {low, high};
+}
+
+/// Whether the round surface of `other` belongs to `axis`'s object. Solid objects do not
+/// interpenetrate, so a surface whose axis lies inside this one's column is another strip of
+/// it; and a thin round surface against the column's side that fits within `reach` of the axis is
+/// a part held by it (a mug's handle, fitted as a thin upright cylinder of its own), not an
+/// object standing beside it.
+bool partOfObject(const VerticalAxis& other, const VerticalAxis& axis, const Eigen::Vector3f& up, float reach,
+                  float tolerance) {
+  const float apart = distanceFromAxis(other.point, axis, up);
+  if (apart < axis.radius) return true;
+  return 2.0f * other.radius < axis.radius && apart + other.radius < reach &&
+         apart - other.radius < axis.radius + 2.0f * tolerance;
+}
+
+/// Whether p lies on the surface of revolution of one of `others` and not on that of `axis`.
+bool onAnotherRoundSurface(const Eigen::Vector3f& p, const VerticalAxis& axis, const std::vector<const VerticalAxis*>& others,
                            const Eigen::Vector3f& up, float tolerance) {
   if (std::fabs(distanceFromAxis(p, axis, up) - axis.radius) < tolerance) return false;
-  for (const VerticalAxis& other : other_axes) {
-    if (&other == &axis) continue;
-    if (std::fabs(distanceFromAxis(p, other, up) - other.radius) < tolerance &&
-        (other.point - axis.point).norm() > tolerance) {
+  for (const VerticalAxis* other : others) {
+    if (std::fabs(distanceFromAxis(p, *other, up) - other->radius) < tolerance &&
+        (other->point - axis.point).norm() > tolerance) {
       return true;
     }
   }
@@ -231,28 +254,30 @@ float reflectionScore(const ReflectionEvidence& evidence, const UprightHypothesi
   return evidence.landing == ReflectionLanding::Free ? -evidence.cost_foreground : 0.0f;
 }
 
-/// The vertical plane through the axis under which the scene points around it (the object the
+/// The vertical planes through the axis under which the scene points around it (the object the
 /// surface belongs to, as far as it was seen) are best explained by their reflections. A surface
-/// is often only a strip of its object, so the strip alone would pick its own bisector.
-SymmetryHypothesis bestPlaneThroughAxis(const SceneEvidence& evidence, const UprightHypothesisParams& params,
-                                        const VerticalAxis& axis, const std::vector<VerticalAxis>& other_axes, const Eigen::Vector3f& up) {
+/// is often only a strip of its object, so the strip alone would pick its own bisector. One plane,
+/// or two when another orientation, nearly as free of contradiction, matches more.
+std::vector<SymmetryHypothesis> planesThroughAxis(const SceneEvidence& evidence, const UprightHypothesisParams& params,
+                                                  const VerticalAxis& axis, const std::vector<VerticalAxis>& other_axes,
+                                                  const Eigen::Vector3f& up) {
   const Cloud& cloud = evidence.cloud();
-  const std::vector<int>& surface = axis.points;
   const Eigen::Vector3f& axis_point = axis.point;
   const float axis_radius = axis.radius;
-  const int support = static_cast<int>(surface.size());
+  const int support = static_cast<int>(axis.points.size());
   // The column around the axis, over the surface's own height (what stands on or under the
   // object is not its business).
-  float low = std::numeric_limits<float>::max(), high = -std::numeric_limits<float>::max();
-  for (int i : surface) {
-    const float height = up.dot(cloud.points[i].getVector3fMap());
-    low = std::min(low, height);
-    high = std::max(high, height);
-  }
+  auto [low, high] = heightRange(cloud, axis.points, up);
   low -= params.column_height_margin;
   high += params.column_height_margin;
   const float reach = 1.2f * axis_radius + params.surface_tolerance;
   const float attached_reach = std::max(reach, params.attached_reach * axis_radius + params.surface_tolerance);
+  std::vector<const VerticalAxis*> neighbours;
+  for (const VerticalAxis& other : other_axes) {
+    if (&other != &axis && !partOfObject(other, axis, up, attached_reach, params.surface_tolerance)) {
+      neighbours.push_back(&other);
+    }
+  }
   std::vector<int> around, beyond;
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     Eigen::Vector3f offset = cloud.points[i].getVector3fMap() - axis_point;
@@ -262,7 +287,7 @@ SymmetryHypothesis bestPlaneThroughAxis(const SceneEvidence& evidence, const Upr
     if (offset.squaredNorm() >= attached_reach * attached_reach) continue;
     // A touching round neighbour's side is its own business: its axis would tilt the choice
     // toward the plane through both axes, and the cut would take both objects.
-    if (onAnotherRoundSurface(cloud.points[i].getVector3fMap(), axis, other_axes, up, params.surface_tolerance)) continue;
+    if (onAnotherRoundSurface(cloud.points[i].getVector3fMap(), axis, neighbours, up, params.surface_tolerance)) continue;
     (offset.squaredNorm() < reach * reach ? around : beyond).push_back(static_cast<int>(i));
   }
   // A handle sticks out of the column, and it is what orients a mug's plane: mirrored beside
@@ -293,7 +318,16 @@ SymmetryHypothesis bestPlaneThroughAxis(const SceneEvidence& evidence, const Upr
     if (contradiction[k] > least + params.contradiction_tolerance) continue;
     if (best < 0 || agreement[k] > agreement[best]) best = k;
   }
-  return planes[best];
+  // That tolerance is a few points; on a large column the next step of the angle can contradict
+  // a little more and still be the plane that keeps the handle: its cut is tried too.
+  int second = -1;
+  const float share_tolerance = params.second_plane_contradiction_share * static_cast<float>(around.size());
+  for (int k = 0; share_tolerance > 0.0f && k < params.axis_plane_angles; ++k) {
+    if (contradiction[k] > least + share_tolerance) continue;
+    if (second < 0 || agreement[k] > agreement[second]) second = k;
+  }
+  if (second >= 0 && second != best) return {planes[best], planes[second]};
+  return {planes[best]};
 }
 
 }  // namespace
@@ -354,8 +388,10 @@ std::vector<SymmetryHypothesis> uprightHypotheses(const SceneEvidence& evidence,
   // Any vertical plane through an axis is a symmetry plane of a surface of revolution; the one
   // that maps most of the seen part of the object onto itself bisects what was seen.
   for (const VerticalAxis& axis : axes) {
-    result.push_back(bestPlaneThroughAxis(evidence, params, axis, axes, up));
-    result.back().anchor = axis.points;
+    for (SymmetryHypothesis& plane : planesThroughAxis(evidence, params, axis, axes, up)) {
+      result.push_back(std::move(plane));
+      result.back().anchor = axis.points;
+    }
   }
   return result;
 }

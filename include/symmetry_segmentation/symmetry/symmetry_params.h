@@ -95,6 +95,7 @@ struct UprightHypothesisParams {
   float surface_tolerance = 0.01f;
   float attached_reach = 2.0f;
   float contradiction_tolerance = 1.0f;
+  float second_plane_contradiction_share = 0.01f;
   float match_tie_break = 0.05f;
   float distinct_angle_deg = 6.0f;
   float distinct_distance = 0.015f;
@@ -123,6 +124,8 @@ inline void describeParameters(ParameterList<UprightHypothesisParams>& list) {
            "points out to this many radii from the axis that hang on to the column (a mug's handle) are scored too")
       .add("contradiction_tolerance", &P::contradiction_tolerance, 0.0, 1000.0, "points",
            "orientations whose free-space contradiction is within this of the least are told apart by matches")
+      .add("second_plane_contradiction_share", &P::second_plane_contradiction_share, 0.0, 1.0, "",
+           "the best-matching orientation within this share of the scored points of the least is proposed too; 0: one plane per axis")
       .add("match_tie_break", &P::match_tie_break, 0.0, 1.0, "",
            "weight of a matched reflection against one contradicted by free space, when orienting")
       .add("distinct_angle_deg", &P::distinct_angle_deg, 0.1, 180.0, "deg",
