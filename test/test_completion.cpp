@@ -275,3 +275,73 @@ TEST(Completion, StrayVoxelsOffTheSurfaceAreNotReflected) {
   EXPECT_EQ(without_nan.size(), face.size() - 1);
   EXPECT_FALSE(std::count(without_nan.begin(), without_nan.end(), face[5]));
 }
+
+namespace {
+
+/// The front half of an upright can of radius 4 cm, seen from -y from `low` to `high` above the
+/// table z = 0: its foot hidden behind something in front, or its whole side.
+ss::Cloud canSide(float low, float high) {
+  ss::Cloud cloud;
+  for (float a = -3.0f; a <= -0.1f; a += 0.2f) {
+    for (float z = low; z <= high + 1e-4f; z += 0.01f) {
+      ss::PointT p = at(0.04f * std::cos(a), 0.04f * std::sin(a), z);
+      p.getNormalVector3fMap() = Eigen::Vector3f(std::cos(a), std::sin(a), 0.0f);
+      cloud.push_back(p);
+    }
+  }
+  return cloud;
+}
+
+std::vector<int> allOf(const ss::Cloud& cloud) {
+  std::vector<int> indices(cloud.size());
+  for (std::size_t i = 0; i < indices.size(); ++i) indices[i] = static_cast<int>(i);
+  return indices;
+}
+
+}  // namespace
+
+TEST(Completion, ASideSeenOnlyAboveItsHiddenFootRunsDownToTheSupport) {
+  const ss::Cloud cloud = canSide(0.10f, 0.15f);
+  const ss::PlaneCoefficients table(0.0f, 0.0f, 1.0f, 0.0f);
+  const auto everywhere = [](const Eigen::Vector3f&) { return true; };
+  const auto grounded = ss::groundedSidePoints(cloud, allOf(cloud), table, 0.01f, everywhere);
+  ASSERT_FALSE(grounded.empty());
+  float lowest = 1.0f;
+  for (const Eigen::Vector3f& p : grounded) {
+    lowest = std::min(lowest, p.z());
+    EXPECT_LT(p.z(), 0.10f) << "only under the seen side";
+    EXPECT_NEAR(std::hypot(p.x(), p.y()), 0.04f, 0.002f) << "straight down the side";
+  }
+  EXPECT_LT(lowest, 0.03f);
+
+  ss::ObjectBox seen;
+  seen.center = Eigen::Vector3f(0.0f, -0.02f, 0.125f);
+  seen.size = Eigen::Vector3f(0.08f, 0.04f, 0.05f);
+  const ss::ObjectBox box = ss::groundedBox(seen, grounded);
+  EXPECT_NEAR(box.center.z() - 0.5f * box.size.z(), lowest, 1e-5f);
+  EXPECT_NEAR(box.center.z() + 0.5f * box.size.z(), 0.15f, 1e-5f) << "its top stays";
+  EXPECT_FLOAT_EQ(box.size.x(), 0.08f);
+}
+
+TEST(Completion, ASideThatStopsOnSomethingSeenOrOnAnotherObjectIsNotCarriedDown) {
+  const ss::Cloud cloud = canSide(0.10f, 0.15f);
+  const ss::PlaneCoefficients table(0.0f, 0.0f, 1.0f, 0.0f);
+  // A box under it (seen, or another object's): the space below 6 cm is not hidden.
+  const auto above_a_box = [](const Eigen::Vector3f& q) { return q.z() > 0.06f; };
+  EXPECT_TRUE(ss::groundedSidePoints(cloud, allOf(cloud), table, 0.01f, above_a_box).empty());
+  // Under most of it, that is (a box on a box of its footprint, whose hidden backs run on down
+  // beside each other): an object standing on something is not carried past it.
+  const auto under_most = [](const Eigen::Vector3f& q) { return q.z() > 0.06f || q.x() < -0.03f; };
+  EXPECT_TRUE(ss::groundedSidePoints(cloud, allOf(cloud), table, 0.01f, under_most).empty());
+  // A can standing on the table has nothing to add, nor has a lid seen from above.
+  const auto everywhere = [](const Eigen::Vector3f&) { return true; };
+  const ss::Cloud standing = canSide(0.0f, 0.15f);
+  EXPECT_TRUE(ss::groundedSidePoints(standing, allOf(standing), table, 0.01f, everywhere).empty());
+  ss::Cloud lid;
+  for (float x = -0.03f; x <= 0.03f; x += 0.01f) {
+    ss::PointT p = at(x, 0.0f, 0.15f);
+    p.getNormalVector3fMap() = Eigen::Vector3f::UnitZ();
+    lid.push_back(p);
+  }
+  EXPECT_TRUE(ss::groundedSidePoints(lid, allOf(lid), table, 0.01f, everywhere).empty());
+}

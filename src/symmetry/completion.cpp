@@ -35,6 +35,12 @@ constexpr float kMaxRoundDeviation = 0.1f;    // of the slice's median radius, r
 // box's axis, and at least this many of them.
 constexpr float kMaxHiddenSideGap = 0.03f;  // m
 constexpr std::size_t kMinHiddenSidePoints = 3;
+// A column's lowest point is on a side (not a top or bottom face) when its normal is within 45 deg
+// of horizontal; a column reaching within 1.5 cells of the support is grounded (the support's
+// own points are observed there).
+constexpr float kMaxSideNormalUp = 0.7071f;
+constexpr float kGroundReachCells = 1.5f;
+constexpr float kMinGroundedSideShare = 0.5f;
 
 /// Of `sorted` (ascending), the range [low', high'] that continues [low, high]: outwards from it
 /// over the values, up to the first gap wider than `max_gap`.
@@ -63,6 +69,13 @@ SymmetryPlane unitPlane(const SymmetryPlane& plane) {
   if (!(length > 0.0f)) return plane;
   return SymmetryPlane{plane.normal / length, plane.distance / length};
 }
+
+/// Whether p lies in `box` grown by `margin` on every side.
+bool insideBox(const ObjectBox& box, const Eigen::Vector3f& p, float margin) {
+  const Eigen::Vector3f local = box.axes.transpose() * (p - box.center);
+  return (local.cwiseAbs().array() <= (0.5f * box.size).array() + margin).all() && box.size.maxCoeff() > 0.0f;
+}
+
 }  // namespace
 
 std::vector<Eigen::Vector3f> hiddenSideReflections(const SceneEvidence& evidence, const std::vector<int>& points,
@@ -251,6 +264,64 @@ bool planeNearPoints(const Cloud& cloud, const std::vector<int>& points, const S
   return std::fabs(plane.normal.dot(centroid) + plane.distance) <= 0.5f * largest;
 }
 
+std::vector<Eigen::Vector3f> groundedSidePoints(const Cloud& cloud, const std::vector<int>& points,
+                                                const PlaneCoefficients& support, float cell,
+                                                const std::function<bool(const Eigen::Vector3f&)>& hidden) {
+  const Eigen::Vector3f up = support.head<3>();
+  const Eigen::Vector3f u = up.unitOrthogonal();
+  const Eigen::Vector3f v = up.cross(u);
+  std::map<std::pair<long, long>, int> lowest;  // column -> index of its lowest point
+  for (int i : points) {
+    const Eigen::Vector3f p = cloud.points[i].getVector3fMap();
+    if (!p.allFinite()) continue;
+    const std::pair<long, long> column(std::lround(std::floor(u.dot(p) / cell)), std::lround(std::floor(v.dot(p) / cell)));
+    const auto found = lowest.find(column);
+    if (found == lowest.end() || up.dot(p) < up.dot(cloud.points[found->second].getVector3fMap())) lowest[column] = i;
+  }
+  std::vector<Eigen::Vector3f> result;
+  std::vector<Eigen::Vector3f> column_points;
+  std::size_t sides = 0, grounded = 0;
+  for (const auto& [column, i] : lowest) {
+    const Eigen::Vector3f normal = cloud.points[i].getNormalVector3fMap();
+    if (!normal.allFinite() || std::fabs(normal.dot(up)) > kMaxSideNormalUp) continue;  // a top or bottom face
+    ++sides;
+    const Eigen::Vector3f start = cloud.points[i].getVector3fMap();
+    const float height = start.dot(up) + support[3];
+    column_points.clear();
+    bool reached = false;
+    for (float drop = cell; height - drop > 0.0f; drop += cell) {
+      if (height - drop < kGroundReachCells * cell) {
+        reached = true;
+        break;
+      }
+      const Eigen::Vector3f q = start - drop * up;
+      if (!hidden(q)) break;
+      column_points.push_back(q);
+    }
+    if (!reached) continue;
+    ++grounded;
+    result.insert(result.end(), column_points.begin(), column_points.end());
+  }
+  // Most of its sides must reach the support: an object whose sides mostly stop on something
+  // stands on that (a box on a box, whose hidden back runs on down beside the lower one's
+  // unseen back).
+  if (grounded < kMinGroundedSideShare * sides) return {};
+  return result;
+}
+
+ObjectBox groundedBox(ObjectBox box, const std::vector<Eigen::Vector3f>& grounded) {
+  if (grounded.empty()) return box;
+  const Eigen::Vector3f z = box.axes.col(2);
+  float lowest = std::numeric_limits<float>::max();
+  for (const Eigen::Vector3f& p : grounded) lowest = std::min(lowest, z.dot(p));
+  const float bottom = z.dot(box.center) - 0.5f * box.size.z();
+  if (!(lowest < bottom)) return box;
+  const float top = bottom + box.size.z();
+  box.center += 0.5f * (lowest - bottom) * z;
+  box.size.z() = top - lowest;
+  return box;
+}
+
 ObjectBox completedBox(const std::vector<Eigen::Vector3f>& visible, const std::vector<Eigen::Vector3f>& added,
                        const std::optional<Eigen::Vector3f>& up, float trim) {
   Cloud seen_cloud;
@@ -332,8 +403,14 @@ void CompletionStage::run(PipelineState& state) const {
     query.getVector3fMap() = q;
     return state.graph->tree().radiusSearch(query, voxel_size_, near, squared, 1) == 0;
   };
-  std::size_t added = 0, revolved = 0;
-  for (CandidateSegment& segment : state.segments) {
+  // What other objects fill: a column carried down into one stands on it.
+  std::vector<ObjectBox> boxes;
+  if (table && params_.ground_to_support) {
+    for (const CandidateSegment& segment : state.segments) boxes.push_back(objectBox(cloud, segment.points, state.up));
+  }
+  std::size_t added = 0, revolved = 0, grounded = 0;
+  for (std::size_t s = 0; s < state.segments.size(); ++s) {
+    CandidateSegment& segment = state.segments[s];
     std::vector<Eigen::Vector3f> points;
     if (planeNearPoints(cloud, segment.points, segment.plane, state.up)) {
       const std::vector<int> on_surface = surfacePoints(cloud, state.graph->tree(), segment.points,
@@ -354,11 +431,32 @@ void CompletionStage::run(PipelineState& state) const {
       points.insert(points.end(), turned.begin(), turned.end());
       ++revolved;
     }
+    if (table && params_.ground_to_support) {
+      // The object's own points beside a column say nothing of what is under it.
+      const std::function<bool(const Eigen::Vector3f&)> hidden_under = [&](const Eigen::Vector3f& q) {
+        if (table->head<3>().dot(q) + (*table)[3] < 0.0f) return false;
+        if (state.occupancy->classify(q) == Occupancy::Free) return false;
+        for (std::size_t o = 0; o < boxes.size(); ++o) {
+          if (o != s && insideBox(boxes[o], q, 0.5f * voxel_size_)) return false;
+        }
+        std::vector<int> near;
+        std::vector<float> squared;
+        PointT query;
+        query.getVector3fMap() = q;
+        state.graph->tree().radiusSearch(query, voxel_size_, near, squared);
+        return std::all_of(near.begin(), near.end(), [&](int j) {
+          return std::binary_search(segment.points.begin(), segment.points.end(), j);
+        });
+      };
+      segment.grounded = onePerCell(groundedSidePoints(cloud, segment.points, *table, voxel_size_, hidden_under), voxel_size_);
+      grounded += segment.grounded.size();
+    }
     segment.completion = onePerCell(points, voxel_size_);
     added += segment.completion->size();
   }
   state.count("points", added);
   state.count("revolved", revolved);
+  state.count("grounded", grounded);
 }
 
 }  // namespace symmetry_segmentation

@@ -89,6 +89,20 @@ Eigen::Vector3f refinedRevolutionAxis(const std::vector<Eigen::Vector3f>& surfac
 std::vector<Eigen::Vector3f> roundPoints(const std::vector<Eigen::Vector3f>& surface, const Eigen::Vector3f& axis_point,
                                          const Eigen::Vector3f& up);
 
+/// Where an object's side is seen only down to some height above the support (its foot behind
+/// something in front of it), the side under each `cell`-wide column of `points` (indices into
+/// `cloud`, with normals) whose lowest point faces sideways, carried straight down to the
+/// `support` (oriented up) in `cell` steps - if `hidden` accepts every step until within 1.5 cells
+/// of it. Objects stand on something: on the support, or on what blocks the way down (seen, or
+/// free space: no column is added there).
+std::vector<Eigen::Vector3f> groundedSidePoints(const Cloud& cloud, const std::vector<int>& points,
+                                                const PlaneCoefficients& support, float cell,
+                                                const std::function<bool(const Eigen::Vector3f&)>& hidden);
+
+/// `box` (its z along the support's up, as objectBox makes it) reaching down to the lowest of
+/// `grounded` (groundedSidePoints) where that is lower: the box's other sides stay.
+ObjectBox groundedBox(ObjectBox box, const std::vector<Eigen::Vector3f>& grounded);
+
 /// The first of `points` in each `cell`-sized cube, in order.
 std::vector<Eigen::Vector3f> onePerCell(const std::vector<Eigen::Vector3f>& points, float cell);
 

@@ -30,6 +30,8 @@ struct CandidateSegment {
   std::vector<int> extra_input_points;  ///< Input points beyond its voxels' (object bottoms), sorted.
   /// Points of its unseen side, its reflections into unobserved space (stage completion).
   std::optional<std::vector<Eigen::Vector3f>> completion;
+  /// Its sides carried down through unobserved space to the support (stage completion).
+  std::vector<Eigen::Vector3f> grounded;
 };
 
 /// Occlusion score above s_occl, smoothness score below s_smooth, at least min_segment_points.

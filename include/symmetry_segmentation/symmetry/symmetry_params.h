@@ -459,12 +459,15 @@ inline void describeParameters(ParameterList<CoaxialPieceParams>& list) {
 /// Stage completion: each object's unseen side from its symmetry.
 struct CompletionParams {
   int revolution_steps = 12;
+  bool ground_to_support = true;
 };
 
 inline void describeParameters(ParameterList<CompletionParams>& list) {
   list.add("revolution_steps", &CompletionParams::revolution_steps, 0, 360, "",
            "a segment turning about a vertical axis (coaxial_pieces.min_axis_share) is also completed by copies turned "
-           "by this many equal steps about it; 0: by its reflection alone");
+           "by this many equal steps about it; 0: by its reflection alone")
+      .add("ground_to_support", &CompletionParams::ground_to_support,
+           "a side whose lower part is hidden runs on down to the support where all the space under it is unobserved");
 }
 
 struct SymmetryParams {
