@@ -30,7 +30,8 @@ struct ObjectBox {
 
 /// An object completed by its symmetry (stage completion).
 struct SegmentCompletion {
-  std::vector<Eigen::Vector3f> points;  ///< Its unseen side: reflections into unobserved space.
+  std::vector<Eigen::Vector3f> points;  ///< Its unseen side: reflections (and turned copies) into
+                                        ///< unobserved space, sides carried down to the support.
   ObjectBox box;                        ///< Around the visible and the added points.
   Eigen::Vector3f frame_position = Eigen::Vector3f::Zero();  ///< Symmetry frame: origin on the plane,
   Eigen::Quaternionf frame_orientation = Eigen::Quaternionf::Identity();  ///< x its normal, z up.
