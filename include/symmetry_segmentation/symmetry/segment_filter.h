@@ -28,7 +28,8 @@ struct CandidateSegment {
   SymmetryPlane plane;
   SegmentScores scores;
   std::vector<int> extra_input_points;  ///< Input points beyond its voxels' (object bottoms), sorted.
-  /// Points of its unseen side, its reflections into unobserved space (stage completion).
+  /// Points of its unseen side, its reflections (and turned copies) into unobserved space (stage
+  /// completion).
   std::optional<std::vector<Eigen::Vector3f>> completion;
   /// Its sides carried down through unobserved space to the support (stage completion).
   std::vector<Eigen::Vector3f> grounded;
