@@ -393,15 +393,20 @@ void CompletionStage::run(PipelineState& state) const {
   if (state.prepared.has_table) table = state.prepared.table_plane;
   const Cloud& cloud = *state.cloud;
   // Unobserved space (not free) above the table (which hides nothing of an object standing on
-  // it) with no observed point within a voxel.
-  const std::function<bool(const Eigen::Vector3f&)> hidden = [&](const Eigen::Vector3f& q) {
+  // it) with no observed point within a voxel but those of `own` (sorted; may be null).
+  const auto unobserved = [&](const Eigen::Vector3f& q, const std::vector<int>* own) {
     if (table && table->head<3>().dot(q) + (*table)[3] < 0.0f) return false;
     if (state.occupancy->classify(q) == Occupancy::Free) return false;
     std::vector<int> near;
     std::vector<float> squared;
     PointT query;
     query.getVector3fMap() = q;
-    return state.graph->tree().radiusSearch(query, voxel_size_, near, squared, 1) == 0;
+    if (!own) return state.graph->tree().radiusSearch(query, voxel_size_, near, squared, 1) == 0;
+    state.graph->tree().radiusSearch(query, voxel_size_, near, squared);
+    return std::all_of(near.begin(), near.end(), [&](int j) { return std::binary_search(own->begin(), own->end(), j); });
+  };
+  const std::function<bool(const Eigen::Vector3f&)> hidden = [&](const Eigen::Vector3f& q) {
+    return unobserved(q, nullptr);
   };
   // What other objects fill: a column carried down into one stands on it.
   std::vector<ObjectBox> boxes;
@@ -434,19 +439,10 @@ void CompletionStage::run(PipelineState& state) const {
     if (table && params_.ground_to_support) {
       // The object's own points beside a column say nothing of what is under it.
       const std::function<bool(const Eigen::Vector3f&)> hidden_under = [&](const Eigen::Vector3f& q) {
-        if (table->head<3>().dot(q) + (*table)[3] < 0.0f) return false;
-        if (state.occupancy->classify(q) == Occupancy::Free) return false;
         for (std::size_t o = 0; o < boxes.size(); ++o) {
           if (o != s && insideBox(boxes[o], q, 0.5f * voxel_size_)) return false;
         }
-        std::vector<int> near;
-        std::vector<float> squared;
-        PointT query;
-        query.getVector3fMap() = q;
-        state.graph->tree().radiusSearch(query, voxel_size_, near, squared);
-        return std::all_of(near.begin(), near.end(), [&](int j) {
-          return std::binary_search(segment.points.begin(), segment.points.end(), j);
-        });
+        return unobserved(q, &segment.points);
       };
       segment.grounded = onePerCell(groundedSidePoints(cloud, segment.points, *table, voxel_size_, hidden_under), voxel_size_);
       grounded += segment.grounded.size();

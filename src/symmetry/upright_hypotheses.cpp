@@ -188,8 +188,9 @@ float distanceFromAxis(const Eigen::Vector3f& p, const VerticalAxis& axis, const
   return offset.norm();
 }
 
-/// The lowest and highest of `points` along `up`.
-std::pair<float, float> heightRange(const Cloud& cloud, const std::vector<int>& points, const Eigen::Vector3f& up) {
+/// The lowest and highest of `points` along `up`, none left out (coaxial_pieces' heightRange
+/// trims 5 % at either end).
+std::pair<float, float> heightExtent(const Cloud& cloud, const std::vector<int>& points, const Eigen::Vector3f& up) {
   float low = std::numeric_limits<float>::max(), high = -std::numeric_limits<float>::max();
   for (int i : points) {
     const float height = up.dot(cloud.points[i].getVector3fMap());
@@ -267,7 +268,7 @@ std::vector<SymmetryHypothesis> planesThroughAxis(const SceneEvidence& evidence,
   const int support = static_cast<int>(axis.points.size());
   // The column around the axis, over the surface's own height (what stands on or under the
   // object is not its business).
-  auto [low, high] = heightRange(cloud, axis.points, up);
+  auto [low, high] = heightExtent(cloud, axis.points, up);
   low -= params.column_height_margin;
   high += params.column_height_margin;
   const float reach = 1.2f * axis_radius + params.surface_tolerance;
