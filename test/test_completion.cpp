@@ -276,6 +276,47 @@ TEST(Completion, StrayVoxelsOffTheSurfaceAreNotReflected) {
   EXPECT_FALSE(std::count(without_nan.begin(), without_nan.end(), face[5]));
 }
 
+TEST(Completion, OnlyPointsInTheVisibleBoxAreCompleted) {
+  // Input points: a box's front face (10 x 8 cm, 25 points per 1 cm cell, as a camera sees it)
+  // and a sheet of the table's noise it took with it, one point per cell, spread 30 cm beside it
+  // 6 mm above the table. The working points are one per cell of both.
+  ss::Cloud input, working;
+  std::vector<int> input_all, working_all, working_face;
+  for (float x = 0.0f; x < 0.1f; x += 0.01f) {
+    for (float z = 0.0f; z < 0.08f; z += 0.01f) {
+      for (int k = 0; k < 25; ++k) {
+        input_all.push_back(static_cast<int>(input.size()));
+        input.push_back(at(x + 0.002f * static_cast<float>(k % 5), 0.0f, z + 0.002f * static_cast<float>(k / 5)));
+      }
+      working_face.push_back(static_cast<int>(working.size()));
+      working_all.push_back(static_cast<int>(working.size()));
+      working.push_back(at(x + 0.005f, 0.0f, z + 0.005f));
+    }
+  }
+  std::vector<int> working_sheet;
+  for (float x = -0.1f; x < 0.2f; x += 0.02f) {
+    for (float y = 0.03f; y < 0.3f; y += 0.02f) {
+      input_all.push_back(static_cast<int>(input.size()));
+      input.push_back(at(x, y, 0.006f));
+      working_sheet.push_back(static_cast<int>(working.size()));
+      working_all.push_back(static_cast<int>(working.size()));
+      working.push_back(at(x, y, 0.006f));
+    }
+  }
+  ASSERT_GT(working_sheet.size(), working_face.size()) << "more sheet than face: no trimmed range would drop it";
+  const ss::ObjectBox visible = ss::objectBox(input, input_all, Eigen::Vector3f::UnitZ());
+  EXPECT_LT(visible.size.maxCoeff(), 0.12f) << "the box leaves the sparse sheet out";
+  const std::vector<int> own = ss::pointsInBox(working, working_all, visible, 0.01f);
+  EXPECT_EQ(own, working_face);
+  // Grown by the margin, a point a voxel off the face still counts; one 3 cm off does not.
+  ss::Cloud near = working;
+  near.push_back(at(0.05f, 0.009f, 0.04f));
+  near.push_back(at(0.05f, 0.03f, 0.04f));
+  const std::vector<int> two = {static_cast<int>(near.size()) - 2, static_cast<int>(near.size()) - 1};
+  EXPECT_EQ(ss::pointsInBox(near, two, visible, 0.01f), std::vector<int>{two[0]});
+  EXPECT_TRUE(ss::pointsInBox(working, working_all, ss::ObjectBox{}, 0.01f).empty()) << "an empty box holds nothing";
+}
+
 namespace {
 
 /// The front half of an upright can of radius 4 cm, seen from -y from `low` to `high` above the

@@ -13,6 +13,9 @@
 #include "symmetry_segmentation/occupancy.h"
 #include "symmetry_segmentation/quantile.h"
 #include "symmetry_segmentation/symmetry/pipeline_state.h"
+#include "symmetry_segmentation/symmetry/sorted_indices.h"
+#include "symmetry_segmentation/object_box.h"
+#include "symmetry_segmentation/preprocessing.h"
 #include "symmetry_segmentation/symmetry/coaxial_pieces.h"
 #include "symmetry_segmentation/symmetry/object_size.h"
 #include "symmetry_segmentation/symmetry/reflection_data_term.h"
@@ -388,6 +391,27 @@ Eigen::Isometry3f symmetryFrame(const Eigen::Vector3f& centroid, const SymmetryP
   return frame;
 }
 
+std::vector<int> pointsInBox(const Cloud& cloud, const std::vector<int>& points, const ObjectBox& visible, float margin) {
+  std::vector<int> inside;
+  inside.reserve(points.size());
+  for (int index : points) {
+    if (insideBox(visible, cloud.points[index].getVector3fMap(), margin)) inside.push_back(index);
+  }
+  return inside;
+}
+
+namespace {
+
+/// The box the output gives `segment` (objectBox of its input points, strays left out); on the
+/// working points when the stage runs without its scene.
+ObjectBox visibleBox(const PipelineState& state, const CandidateSegment& segment) {
+  if (!state.scene || !state.scene->cloud) return objectBox(*state.cloud, segment.points, state.up);
+  const std::optional<Eigen::Vector3f> up = state.up ? state.up : state.scene->up;
+  return objectBox(*state.scene->cloud, setUnion(expandToInput(state.prepared, segment.points), segment.extra_input_points), up);
+}
+
+}  // namespace
+
 void CompletionStage::run(PipelineState& state) const {
   std::optional<PlaneCoefficients> table;
   if (state.prepared.has_table) table = state.prepared.table_plane;
@@ -417,15 +441,19 @@ void CompletionStage::run(PipelineState& state) const {
   for (std::size_t s = 0; s < state.segments.size(); ++s) {
     CandidateSegment& segment = state.segments[s];
     std::vector<Eigen::Vector3f> points;
+    const std::vector<int> own = pointsInBox(cloud, segment.points, visibleBox(state, segment), voxel_size_);
     if (planeNearPoints(cloud, segment.points, segment.plane, state.up)) {
-      const std::vector<int> on_surface = surfacePoints(cloud, state.graph->tree(), segment.points,
+      const std::vector<int> on_surface = surfacePoints(cloud, state.graph->tree(), own,
                                                         kSurfaceRadiusVoxels * voxel_size_, kMinSurfaceNeighbours);
       points = hiddenSideReflections(*state.evidence, on_surface, segment.plane, hidden);
     }
     std::optional<Eigen::Vector3f> axis;
     if (state.up && params_.revolution_steps > 1) axis = revolutionAxis(cloud, segment.points, *state.up, axes_, min_axis_share_);
+    // The axis and the round surface are fitted to all of the segment (its sheet of table noise
+    // is no round surface, and the fit needs every point of a cone's foot); only the surface's
+    // points in the box are turned.
     const std::vector<int> surface =
-        axis ? revolutionSurface(cloud, segment.points, *axis, *state.up, axes_) : std::vector<int>{};
+        axis ? intersection(revolutionSurface(cloud, segment.points, *axis, *state.up, axes_), own) : std::vector<int>{};
     if (!surface.empty()) {
       std::vector<Eigen::Vector3f> seen;
       seen.reserve(surface.size());
