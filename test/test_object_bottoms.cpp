@@ -81,6 +81,28 @@ TEST(ObjectBottoms, TheTableStaysOut) {
   EXPECT_EQ(segments[0].indices, box.boxPoints(&prepared));
 }
 
+TEST(ObjectBottoms, SideFacingTableNoiseBesideTheFootStaysOut) {
+  // A strip of table points whose normals face sideways (a camera frame's pixel-grid normals on
+  // a noisy table) runs from the box's foot 10 cm out across the table: linked to the box's
+  // bottom strip, but not under the box.
+  BoxOnTable box;
+  for (auto& p : box.scene.cloud->points) {
+    if (p.z == 0.0f && p.x > 0.1001f && p.y > 0.03f && p.y < 0.05f) {
+      p.normal_x = 1.0f;
+      p.normal_z = 0.0f;
+    }
+  }
+  const ss::PreprocessedScene prepared = ss::preprocess(box.scene, box.params);
+  std::vector<ss::Segment> segments(1);
+  segments[0].indices = box.boxPoints(&prepared);
+  ss::restoreObjectBottoms(box.scene, prepared, box.params.voxel_size, segments, {});
+  const std::vector<int> whole = box.boxPoints();
+  for (int i : whole) EXPECT_TRUE(std::binary_search(segments[0].indices.begin(), segments[0].indices.end(), i)) << i;
+  float farthest = 0.0f;
+  for (int i : segments[0].indices) farthest = std::max(farthest, (*box.scene.cloud)[i].x);
+  EXPECT_LE(farthest, 0.1f + box.params.voxel_size + 1e-4f) << "no farther out than the link distance past the side";
+}
+
 TEST(ObjectBottoms, NothingOutsideTheRegionOfInterestIsAdded) {
   // The region of interest takes only the box's half with x < 5 cm: the bottom strip of the
   // other half, dropped by the margin like the rest, stays out although it touches the segment.

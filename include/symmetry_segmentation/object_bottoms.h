@@ -38,9 +38,10 @@ inline void describeParameters(ParameterList<ObjectBottomParams>& list) {
 
 /// For each segment (sorted input-cloud indices): the input points preprocessing dropped as
 /// within the table margin whose own normal runs across the table's and which are linked,
-/// directly or through other such points, to the segment's points within the link distance
-/// (each goes to the segment of the nearest such point; none without input normals unless
-/// `prepared` got the table band's from the frame's pixel grid), and those its footprint
+/// directly or through other such points, to the segment's points within the link distance and
+/// lie under its lowest points (within the link distance of one, seen along the table's normal);
+/// each goes to the segment of the nearest such point (none without input normals unless
+/// `prepared` got the table band's from the frame's pixel grid); and those its footprint
 /// encloses (object_floors.h, min_floor_area > 0); sorted. All empty without a table.
 std::vector<std::vector<int>> objectBottoms(const Scene& scene, const PreprocessedScene& prepared, float voxel_size,
                                             const std::vector<std::vector<int>>& segments,
