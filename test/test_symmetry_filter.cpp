@@ -107,6 +107,18 @@ TEST(SegmentFilter, DuplicatesKeepTheCleanestBoundary) {
   EXPECT_EQ(kept[2].points.front(), 200);
 }
 
+TEST(SegmentFilter, UnionsSharingAnObjectAreNotTwoObjects) {
+  // Objects A (0-69), B (70-199), C (200-269); two cuts give the unions A+B and B+C (B is 65 %
+  // of each) and a third cut C alone. One segment per object: of the unions only the cleaner
+  // stays, and C alone beside it.
+  const auto kept = ss::removeDuplicates({candidate(0, 200, 1.0f, 0.004f), candidate(70, 270, 1.0f, 0.006f),
+                                          candidate(200, 270, 1.0f, 0.008f)},
+                                         ss::DuplicateParams{});
+  ASSERT_EQ(kept.size(), 2u);
+  EXPECT_EQ(kept[0].points.front(), 0);
+  EXPECT_EQ(kept[1].points.front(), 200);
+}
+
 TEST(ParallelFor, EveryIndexOnceAndExceptionsPropagate) {
   for (int threads : {1, 2, 4}) {
     std::vector<int> hits(1000, 0);

@@ -414,7 +414,9 @@ inline void describeParameters(ParameterList<ObjectSizeParams>& list) {
 
 /// Stage dedup: one segment per object.
 struct DuplicateParams {
-  float max_overlap = 0.7f;
+  // An object is in one segment: two that share half the smaller are not two objects (a noisy
+  // frame's cuts give unions of two neighbours, each neighbour in two or three of them).
+  float max_overlap = 0.5f;
 };
 
 inline void describeParameters(ParameterList<DuplicateParams>& list) {
