@@ -432,16 +432,16 @@ void CompletionStage::run(PipelineState& state) const {
   const std::function<bool(const Eigen::Vector3f&)> hidden = [&](const Eigen::Vector3f& q) {
     return unobserved(q, nullptr);
   };
-  // What other objects fill: a column carried down into one stands on it.
+  // Each object's visible box: what it completes lies in it, and a column carried down into
+  // another's stands on that object.
   std::vector<ObjectBox> boxes;
-  if (table && params_.ground_to_support) {
-    for (const CandidateSegment& segment : state.segments) boxes.push_back(objectBox(cloud, segment.points, state.up));
-  }
+  boxes.reserve(state.segments.size());
+  for (const CandidateSegment& segment : state.segments) boxes.push_back(visibleBox(state, segment));
   std::size_t added = 0, revolved = 0, grounded = 0;
   for (std::size_t s = 0; s < state.segments.size(); ++s) {
     CandidateSegment& segment = state.segments[s];
     std::vector<Eigen::Vector3f> points;
-    const std::vector<int> own = pointsInBox(cloud, segment.points, visibleBox(state, segment), voxel_size_);
+    const std::vector<int> own = pointsInBox(cloud, segment.points, boxes[s], voxel_size_);
     if (planeNearPoints(cloud, segment.points, segment.plane, state.up)) {
       const std::vector<int> on_surface = surfacePoints(cloud, state.graph->tree(), own,
                                                         kSurfaceRadiusVoxels * voxel_size_, kMinSurfaceNeighbours);
