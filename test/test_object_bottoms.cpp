@@ -43,6 +43,17 @@ struct BoxOnTable {
   }
 };
 
+/// Table points where `where` holds get a sideways normal (a noisy table's).
+template <typename Where>
+void faceSideways(BoxOnTable& box, Where where) {
+  for (auto& p : box.scene.cloud->points) {
+    if (p.z == 0.0f && where(p)) {
+      p.normal_x = 1.0f;
+      p.normal_z = 0.0f;
+    }
+  }
+}
+
 }  // namespace
 
 TEST(ObjectBottoms, TheStripWithinTheTableMarginRejoinsItsObject) {
@@ -61,12 +72,7 @@ TEST(ObjectBottoms, TheStripWithinTheTableMarginRejoinsItsObject) {
 TEST(ObjectBottoms, TheTableStaysOut) {
   BoxOnTable box;
   // Table points that face sideways (a noisy normal) but lie away from every segment.
-  for (auto& p : box.scene.cloud->points) {
-    if (p.z == 0.0f && p.x < -0.1f) {
-      p.normal_x = 1.0f;
-      p.normal_z = 0.0f;
-    }
-  }
+  faceSideways(box, [](const ss::PointT& p) { return p.x < -0.1f; });
   const ss::PreprocessedScene prepared = ss::preprocess(box.scene, box.params);
   std::vector<ss::Segment> segments(1);
   segments[0].indices = box.boxPoints(&prepared);
@@ -86,12 +92,7 @@ TEST(ObjectBottoms, SideFacingTableNoiseBesideTheFootStaysOut) {
   // a noisy table) runs from the box's foot 10 cm out across the table: linked to the box's
   // bottom strip, but not under the box.
   BoxOnTable box;
-  for (auto& p : box.scene.cloud->points) {
-    if (p.z == 0.0f && p.x > 0.1001f && p.y > 0.03f && p.y < 0.05f) {
-      p.normal_x = 1.0f;
-      p.normal_z = 0.0f;
-    }
-  }
+  faceSideways(box, [](const ss::PointT& p) { return p.x > 0.1001f && p.y > 0.03f && p.y < 0.05f; });
   const ss::PreprocessedScene prepared = ss::preprocess(box.scene, box.params);
   std::vector<ss::Segment> segments(1);
   segments[0].indices = box.boxPoints(&prepared);
