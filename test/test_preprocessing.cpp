@@ -168,20 +168,26 @@ TEST(Preprocessing, RegionOfInterestSelectsObjectsButNotTheTable) {
 }
 
 TEST(Preprocessing, AdaptiveTableMarginFollowsTheTableNoise) {
-  ss::PreprocessParams params;  // ransac_distance 1 cm, table_margin 1 cm
-  std::vector<float> noisy;
-  std::uint32_t state = 12345;
-  for (int i = 0; i < 4000; ++i) {
-    // Sum of uniforms: roughly Gaussian with sigma 2 mm, reproducible everywhere.
-    float sum = 0.0f;
-    for (int k = 0; k < 12; ++k) {
-      state = state * 1664525u + 1013904223u;
-      sum += static_cast<float>(state >> 8) / 16777216.0f;
+  ss::PreprocessParams params;  // ransac_distance 1 cm, table_margin 1.5 cm
+  // Sum of uniforms: roughly Gaussian, reproducible everywhere; 500 object points well above.
+  auto table_with_objects = [](float sigma) {
+    std::vector<float> heights;
+    std::uint32_t state = 12345;
+    for (int i = 0; i < 4000; ++i) {
+      float sum = 0.0f;
+      for (int k = 0; k < 12; ++k) {
+        state = state * 1664525u + 1013904223u;
+        sum += static_cast<float>(state >> 8) / 16777216.0f;
+      }
+      heights.push_back(sigma * (sum - 6.0f));
     }
-    noisy.push_back(0.002f * (sum - 6.0f));
-  }
-  for (int i = 0; i < 500; ++i) noisy.push_back(0.05f + 0.001f * i);  // object points well above
+    for (int i = 0; i < 500; ++i) heights.push_back(0.05f + 0.001f * i);
+    return heights;
+  };
+  const std::vector<float> noisy = table_with_objects(0.002f);
   EXPECT_NEAR(ss::adaptiveTableMargin(noisy, params), 0.006f, 0.0012f);
+  // A RealSense-like table (sigma 4 mm): its sheet above 1 cm would join the objects on it.
+  EXPECT_NEAR(ss::adaptiveTableMargin(table_with_objects(0.004f), params), 0.012f, 0.0015f);
   EXPECT_FLOAT_EQ(ss::adaptiveTableMargin(std::vector<float>(4000, 0.0f), params), 0.005f);
   EXPECT_FLOAT_EQ(ss::adaptiveTableMargin(std::vector<float>(50, 0.0f), params), params.table_margin);
   params.table_margin = 0.004f;  // the configured margin caps it

@@ -17,7 +17,7 @@ namespace symmetry_segmentation {
 struct PreprocessParams {
   float voxel_size = 0.01f;
   bool remove_table = true;
-  float table_margin = 0.01f;
+  float table_margin = 0.015f;
   bool adaptive_table_margin = true;
   float ransac_distance = 0.01f;
   int ransac_iterations = 500;
