@@ -179,6 +179,36 @@ TEST(CompositeSegments, TheRestOfOneObjectFoundAloneIsTheOtherWhenApartOrMetAtCr
             0u);
 }
 
+// An object seen in two pieces either side of another standing in front of it, both centred on
+// one plane (a box behind a board): the cut of that plane takes all three. The pieces (0..29,
+// 70..99) are found alone and mirror onto each other; the occluder (30..69) is not.
+TEST(CompositeSegments, PiecesMirroredOntoEachOtherAroundTheRestAreOneObject) {
+  auto pieces_and_occluder = [] { return std::vector<ss::CandidateSegment>{segment(0, 99, 1.0f)}; };
+  const std::vector<ss::CandidateSegment> pieces = {segment(0, 29, 2.0f), segment(70, 99, 3.0f)};
+  std::vector<ss::CandidateSegment> segments = pieces_and_occluder();
+  EXPECT_EQ(ss::splitCompositeSegments(segments, pieces, evidence(chainNeighbours(), noCrease, mirrorAcrossSeam),
+                                       ss::CompositeSegmentParams{}),
+            1u);
+  ASSERT_EQ(segments.size(), 2u);
+  std::vector<int> both_pieces = segment(0, 29).points;
+  const std::vector<int> right = segment(70, 99).points;
+  both_pieces.insert(both_pieces.end(), right.begin(), right.end());
+  EXPECT_EQ(segments[0].points, both_pieces) << "the pieces are one object";
+  EXPECT_EQ(segments[1].points, segment(30, 69).points) << "the occluder the other";
+  for (const auto& split : segments) {
+    EXPECT_EQ(split.plane.distance, 1.0f) << "both keep the union's plane";
+    EXPECT_EQ(split.scores.occlusion, 0.5f) << "and are scored for it";
+  }
+
+  // Pieces joined to the occluder by a flat face running on (not apart, no crease) stay whole.
+  std::vector<ss::CandidateSegment> unchanged = pieces_and_occluder();
+  ss::CompositeSegmentParams params;
+  params.min_seam_links = 1;
+  EXPECT_EQ(ss::splitCompositeSegments(unchanged, pieces, evidence(chainNeighbours(), noCrease, mirrorAcrossSeam), params),
+            0u);
+  EXPECT_EQ(unchanged.size(), 1u);
+}
+
 // Two parts that each have a symmetry of their own but run on into each other without a crease
 // (an L-shaped block's slab and upright, joined through the corner under the upright that
 // neither part took) are one object; the same parts joined only across creases are two.

@@ -122,6 +122,57 @@ bool twoObjects(const CandidateSegment& whole, const std::vector<int>& a, const 
          !oneColor(a, b, evidence, params);  // last: the colour means convert every point
 }
 
+/// The points of `whole` in `a` or `b`.
+std::vector<int> unionWithin(const std::vector<int>& whole, const std::vector<int>& a, const std::vector<int>& b) {
+  return intersection(whole, setUnion(a, b));
+}
+
+/// An object seen in two pieces either side of another, in front of it and centred on the same
+/// plane: the cut of that plane takes all three, each piece is found alone (never the occluder,
+/// which is seen whole only with them), and the pieces are each other's mirror images. Their
+/// union is one object and the rest of `whole` the other, both kept on `whole`'s plane.
+std::optional<std::pair<CandidateSegment, CandidateSegment>> splitAtMirroredPieces(
+    const CandidateSegment& whole, const std::vector<CandidateSegment>& parts,
+    const std::vector<std::vector<int>>& neighbours, const Creases& crease, const SceneEvidence& evidence,
+    const CompositeSegmentParams& params) {
+  const double size = static_cast<double>(whole.points.size());
+  std::vector<std::size_t> pieces;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const auto& piece = parts[i].points;
+    if (piece.empty() || piece.size() > params.max_part_fraction * size) continue;
+    if (intersectionSize(piece, whole.points) >= params.min_nested_fraction * piece.size()) pieces.push_back(i);
+  }
+  std::optional<std::pair<CandidateSegment, CandidateSegment>> best;
+  for (std::size_t x = 0; x < pieces.size(); ++x) {
+    for (std::size_t y = x + 1; y < pieces.size(); ++y) {
+      const auto& a = parts[pieces[x]].points;
+      const auto& b = parts[pieces[y]].points;
+      if (intersectionSize(a, b) > params.max_part_overlap * std::min(a.size(), b.size())) continue;
+      std::vector<int> object = unionWithin(whole.points, a, b);
+      // Each piece a fair share of the object, the object a fair share of `whole`.
+      if (std::min(a.size(), b.size()) < params.min_part_fraction * object.size() ||
+          object.size() < params.min_part_fraction * size || object.size() > params.max_part_fraction * size) {
+        continue;
+      }
+      if (best && object.size() <= best->first.points.size()) continue;
+      if (!mirroredOntoOther(a, b, whole.plane, evidence, params) || !mirroredOntoOther(b, a, whole.plane, evidence, params)) {
+        continue;
+      }
+      std::vector<int> rest = difference(whole.points, object);
+      if (!twoObjects(whole, object, rest, params.min_rest_crease_fraction, neighbours, crease, evidence, params)) continue;
+      CandidateSegment first, second;
+      first.points = std::move(object);
+      second.points = std::move(rest);
+      first.plane = second.plane = whole.plane;
+      best = std::make_pair(std::move(first), std::move(second));
+    }
+  }
+  if (!best) return std::nullopt;
+  best->first.scores = evidence.scores(best->first.points, best->first.plane);
+  best->second.scores = evidence.scores(best->second.points, best->second.plane);
+  return best;
+}
+
 /// The two objects `whole` is made of: two segments of `parts` covering it, else one segment of
 /// `parts` and the rest of `whole` (which keeps `whole`'s plane).
 std::optional<std::pair<CandidateSegment, CandidateSegment>> findSplit(
@@ -179,9 +230,11 @@ std::optional<std::pair<CandidateSegment, CandidateSegment>> findSplit(
     best_rest = std::move(other);
     best_part = nested[x];
   }
-  if (!best_rest) return std::nullopt;
-  best_rest->scores = evidence.scores(best_rest->points, best_rest->plane);
-  return std::make_pair(parts[best_part], std::move(*best_rest));
+  if (best_rest) {
+    best_rest->scores = evidence.scores(best_rest->points, best_rest->plane);
+    return std::make_pair(parts[best_part], std::move(*best_rest));
+  }
+  return splitAtMirroredPieces(whole, parts, neighbours, crease, evidence, params);
 }
 
 bool samePoints(const CandidateSegment& a, const CandidateSegment& b) { return a.points == b.points; }

@@ -18,7 +18,9 @@ namespace symmetry_segmentation {
 /// Replaces every segment of `segments` that is two objects by those two (each added once, after
 /// the remaining segments): two segments of `parts` that together make it up, else one segment of
 /// `parts` and the rest of it (an object seen in pieces around the other is never found whole on
-/// its own; the rest keeps the larger segment's plane and is scored anew). The two must be apart
+/// its own; the rest keeps the larger segment's plane and is scored anew), else two segments of
+/// `parts` that mirror onto each other - one object's pieces either side of the other, which is
+/// then never found alone - and the rest (both on the larger segment's plane). The two must be apart
 /// or meet at a concave seam (links crossing creases sharper than params.crease_angle_deg; a rest
 /// at creases only), the larger segment's plane must mirror each onto itself, and where
 /// params.use_color their mean colours must differ by params.min_color_difference. Returns how
