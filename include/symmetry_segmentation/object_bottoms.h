@@ -1,7 +1,7 @@
 #pragma once
 // The bottom centimetre of each object, given back after segmentation.
 //
-// Preprocessing drops every point within the table margin (3 sigma of the table's noise, 5-10
+// Preprocessing drops every point within the table margin (3 sigma of the table's noise, 5-15
 // mm) so that no method mistakes the table for an object; with it goes the strip of each
 // object's sides just above the table - 5-15 % of a small box, enough to push a correct segment
 // under IoU 0.9. Normals tell the two apart: the table faces up, an object's sides face across

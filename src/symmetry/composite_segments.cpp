@@ -131,17 +131,12 @@ std::vector<int> unionWithin(const std::vector<int>& whole, const std::vector<in
 /// plane: the cut of that plane takes all three, each piece is found alone (never the occluder,
 /// which is seen whole only with them), and the pieces are each other's mirror images. Their
 /// union is one object and the rest of `whole` the other, both kept on `whole`'s plane.
+/// `pieces`: the parts lying within `whole` (any size up to max_part_fraction of it).
 std::optional<std::pair<CandidateSegment, CandidateSegment>> splitAtMirroredPieces(
-    const CandidateSegment& whole, const std::vector<CandidateSegment>& parts,
+    const CandidateSegment& whole, const std::vector<CandidateSegment>& parts, const std::vector<std::size_t>& pieces,
     const std::vector<std::vector<int>>& neighbours, const Creases& crease, const SceneEvidence& evidence,
     const CompositeSegmentParams& params) {
   const double size = static_cast<double>(whole.points.size());
-  std::vector<std::size_t> pieces;
-  for (std::size_t i = 0; i < parts.size(); ++i) {
-    const auto& piece = parts[i].points;
-    if (piece.empty() || piece.size() > params.max_part_fraction * size) continue;
-    if (intersectionSize(piece, whole.points) >= params.min_nested_fraction * piece.size()) pieces.push_back(i);
-  }
   std::optional<std::pair<CandidateSegment, CandidateSegment>> best;
   for (std::size_t x = 0; x < pieces.size(); ++x) {
     for (std::size_t y = x + 1; y < pieces.size(); ++y) {
@@ -180,16 +175,16 @@ std::optional<std::pair<CandidateSegment, CandidateSegment>> findSplit(
     const std::vector<std::vector<int>>& neighbours, const Creases& crease, const Creases& joined_crease,
     const SceneEvidence& evidence, const CompositeSegmentParams& params) {
   const double size = static_cast<double>(whole.points.size());
-  std::vector<std::size_t> nested;
+  std::vector<std::size_t> within;  // parts lying within `whole`, of any size up to the largest part
+  std::vector<std::size_t> nested;  // those of a part's size
   std::vector<std::size_t> inside;  // per nested part: its points within `whole`
   for (std::size_t i = 0; i < parts.size(); ++i) {
     const auto& part = parts[i].points;
-    if (part.empty() || part.size() < params.min_part_fraction * size ||
-        part.size() > params.max_part_fraction * size) {
-      continue;
-    }
+    if (part.empty() || part.size() > params.max_part_fraction * size) continue;
     const std::size_t common = intersectionSize(part, whole.points);
     if (common < params.min_nested_fraction * part.size()) continue;
+    within.push_back(i);
+    if (part.size() < params.min_part_fraction * size) continue;
     nested.push_back(i);
     inside.push_back(common);
   }
@@ -234,7 +229,7 @@ std::optional<std::pair<CandidateSegment, CandidateSegment>> findSplit(
     best_rest->scores = evidence.scores(best_rest->points, best_rest->plane);
     return std::make_pair(parts[best_part], std::move(*best_rest));
   }
-  return splitAtMirroredPieces(whole, parts, neighbours, crease, evidence, params);
+  return splitAtMirroredPieces(whole, parts, within, neighbours, crease, evidence, params);
 }
 
 bool samePoints(const CandidateSegment& a, const CandidateSegment& b) { return a.points == b.points; }
