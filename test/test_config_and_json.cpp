@@ -141,7 +141,7 @@ TEST(SegmentsJson, RoundTripKeepsEverything) {
   result.segments = {plain, with_plane};
   result.timing_ms = {{"preprocess", 12.5}, {"total", 40.0}};
   result.support = ss::SupportSurface{Eigen::Vector4f(0, 0, 1, -0.7f),
-                                      {{0.f, 0.f, 0.7f}, {1.f, 0.f, 0.7f}, {0.5f, 1.f, 0.7f}}};
+                                      {{0.f, 0.f, 0.7f}, {1.f, 0.f, 0.7f}, {0.5f, 1.f, 0.7f}}, 0.0025f};
   const std::string dir = test_support::makeTempDir("segments_json");
   ss::writeSegmentsJson(result, dir + "/s.json");
   const auto loaded = ss::readSegmentsJson(dir + "/s.json");
@@ -163,6 +163,7 @@ TEST(SegmentsJson, RoundTripKeepsEverything) {
   EXPECT_FLOAT_EQ(loaded.support->plane[3], -0.7f);
   ASSERT_EQ(loaded.support->polygon.size(), 3u);
   EXPECT_FLOAT_EQ(loaded.support->polygon[2].y(), 1.0f);
+  EXPECT_FLOAT_EQ(loaded.support->noise, 0.0025f);
 }
 
 TEST(SegmentsJson, MalformedFilesAreErrors) {
@@ -171,7 +172,9 @@ TEST(SegmentsJson, MalformedFilesAreErrors) {
                           "{\"input_points\": 3, \"segments\": [{\"indices\": \"x\"}]}",
                           "{\"input_points\": 3, \"support\": {\"plane\": [0, 0, 1]}, \"segments\": []}",
                           "{\"input_points\": 3, \"support\": {\"plane\": [0, 0, 0, 1], \"polygon\": []}, \"segments\": []}",
-                          "{\"input_points\": 3, \"support\": {\"plane\": [0, 0, 1, 0], \"polygon\": [[1, 2]]}, \"segments\": []}"}) {
+                          "{\"input_points\": 3, \"support\": {\"plane\": [0, 0, 1, 0], \"polygon\": [[1, 2]]}, \"segments\": []}",
+                          "{\"input_points\": 3, \"support\": {\"plane\": [0, 0, 1, 0], \"polygon\": [], \"noise\": -1}, \"segments\": []}",
+                          "{\"input_points\": 3, \"support\": {\"plane\": [0, 0, 1, 0], \"polygon\": [], \"noise\": \"x\"}, \"segments\": []}"}) {
     test_support::writeTextFile(dir + "/bad.json", bad);
     EXPECT_THROW(ss::readSegmentsJson(dir + "/bad.json"), ss::InputError) << bad;
   }

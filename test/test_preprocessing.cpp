@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numeric>
 #include <set>
@@ -106,6 +107,11 @@ TEST(Preprocessing, FindsTableWithRansacAndOrientsEstimatedNormals) {
   const ss::Scene scene = tableWithBox(false);
   const auto prepared = ss::preprocess(scene, ss::PreprocessParams{});
   ASSERT_TRUE(prepared.has_table);
+  // A flat table's measured noise is small, and the support the methods report carries it.
+  EXPECT_GE(prepared.table_noise, 0.0f);
+  EXPECT_LT(prepared.table_noise, 0.001f);
+  ASSERT_TRUE(ss::supportSurface(prepared).has_value());
+  EXPECT_EQ(ss::supportSurface(prepared)->noise, prepared.table_noise);
   EXPECT_NEAR(std::fabs(prepared.table_plane[2]), 1.0f, 0.01f);
   EXPECT_NEAR(prepared.table_plane[3], 0.0f, 0.005f);
   std::size_t facing_sensor = 0;
@@ -186,12 +192,61 @@ TEST(Preprocessing, AdaptiveTableMarginFollowsTheTableNoise) {
   };
   const std::vector<float> noisy = table_with_objects(0.002f);
   EXPECT_NEAR(ss::adaptiveTableMargin(noisy, params), 0.006f, 0.0012f);
+  // The spread itself is the sensor's noise (boxes use it): the objects above do not widen it.
+  ASSERT_TRUE(ss::tableSpread(noisy, params).has_value());
+  EXPECT_NEAR(ss::tableSpread(noisy, params)->sigma, 0.002f, 0.0003f);
+  EXPECT_NEAR(ss::tableSpread(table_with_objects(0.004f), params)->sigma, 0.004f, 0.0008f);
+  EXPECT_FALSE(ss::tableSpread(std::vector<float>(50, 0.0f), params).has_value());
   // A RealSense-like table (sigma 4 mm): its sheet above 1 cm would join the objects on it.
   EXPECT_NEAR(ss::adaptiveTableMargin(table_with_objects(0.004f), params), 0.012f, 0.0015f);
   EXPECT_FLOAT_EQ(ss::adaptiveTableMargin(std::vector<float>(4000, 0.0f), params), 0.005f);
   EXPECT_FLOAT_EQ(ss::adaptiveTableMargin(std::vector<float>(50, 0.0f), params), params.table_margin);
   params.table_margin = 0.004f;  // the configured margin caps it
   EXPECT_FLOAT_EQ(ss::adaptiveTableMargin(noisy, params), 0.004f);
+}
+
+// The noise boxes are trimmed by is the sensor's: how the table's points scatter about their
+// neighbours' height, not how far a table that is not flat (a fused map's slow drift) strays from
+// one plane - that spread is the margin's business.
+TEST(Preprocessing, TableNoiseIsTheScatterAboutTheNeighboursNotTheWarp) {
+  auto tableScene = [](float warp, float noise) {
+    ss::Scene scene;
+    scene.cloud = std::make_shared<ss::Cloud>();
+    test_clouds::addTable(*scene.cloud, 0.4f, 0.004f);
+    std::uint32_t state = 99;
+    for (auto& p : scene.cloud->points) {
+      float sum = 0.0f;
+      for (int k = 0; k < 12; ++k) {
+        state = state * 1664525u + 1013904223u;
+        sum += static_cast<float>(state >> 8) / 16777216.0f;
+      }
+      p.z = warp * std::sin(p.x / 0.1f) + noise * (sum - 6.0f);
+    }
+    test_clouds::addBox(*scene.cloud, {0.0f, 0.0f, 0.0f}, {0.1f, 0.08f, 0.12f}, 0.004f);
+    scene.has_normals = true;
+    scene.table_plane = ss::PlaneCoefficients(0.0f, 0.0f, 1.0f, 0.0f);
+    scene.sensor_origins.push_back({0.5f, 0.5f, 0.8f});
+    return scene;
+  };
+  const auto warped = ss::preprocess(tableScene(0.004f, 0.0f), ss::PreprocessParams{});
+  EXPECT_LT(warped.table_noise, 0.001f) << "a smooth 4 mm warp is no noise";
+  EXPECT_GT(warped.table_margin, 0.006f) << "but the margin still clears it";
+  const auto noisy = ss::preprocess(tableScene(0.0f, 0.003f), ss::PreprocessParams{});
+  EXPECT_NEAR(noisy.table_noise, 0.003f, 0.0006f);
+  // Nor do the sides of what stands on it, which reach into its band: with normals, only points
+  // facing the table's way count (a fused map's object sides; kinfu 1.9 mm -> 0.6 mm).
+  ss::Scene fenced = tableScene(0.0f, 0.0f);
+  for (float y = -0.35f; y <= 0.35f; y += 0.1f) {
+    for (float x = -0.4f; x <= 0.4f; x += 0.002f) {
+      for (float z = 0.0005f; z < 0.01f; z += 0.001f) {
+        ss::PointT side;
+        side.getVector3fMap() = Eigen::Vector3f(x, y, z);
+        side.getNormalVector3fMap() = Eigen::Vector3f::UnitY();
+        fenced.cloud->push_back(side);
+      }
+    }
+  }
+  EXPECT_LT(ss::preprocess(fenced, ss::PreprocessParams{}).table_noise, 0.001f);
 }
 
 TEST(Preprocessing, PrefersThePlaneObjectsStandOnToALargerWall) {

@@ -66,6 +66,8 @@ struct PreprocessedScene {
   std::vector<int> kept_input_indices;     ///< Input points that survived (finite, above the table).
   bool has_table = false;
   float table_margin = 0.0f;               ///< The margin actually used (m).
+  float table_noise = 0.0f;                ///< The sensor's noise (m): robust sigma of the table's points about
+                                           ///< their 2 cm cell's median height; 0: unknown.
   PlaneCoefficients table_plane = PlaneCoefficients::Zero();  ///< Normal points away from the table top.
   std::optional<SupportPolygon> support_polygon;  ///< The table's extent, when cropped to it.
   Eigen::Vector3f viewpoint = Eigen::Vector3f::Zero();         ///< Used to orient normals.
@@ -87,8 +89,17 @@ struct PreprocessedScene {
 /// Throws InputError when nothing is left to segment (no finite point, all on the table).
 PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params);
 
+/// How the table's points spread about its plane, from these signed point-to-plane distances: the
+/// median and robust sigma (scaled median absolute deviation) of those within ransac_distance;
+/// nullopt when fewer than 100 are.
+struct TableSpread {
+  float median = 0.0f;
+  float sigma = 0.0f;
+};
+std::optional<TableSpread> tableSpread(const std::vector<float>& distances, const PreprocessParams& params);
+
 /// The margin above the table for these signed point-to-plane distances: median + 3 sigma of
-/// the points within ransac_distance (robust sigma), clamped to [5 mm, params.table_margin].
+/// tableSpread, clamped to [5 mm, params.table_margin]; params.table_margin when not measured.
 float adaptiveTableMargin(const std::vector<float>& distances, const PreprocessParams& params);
 
 /// Estimates the supporting plane of `cloud` with RANSAC; returns false if none is found. Of up to

@@ -49,6 +49,7 @@ struct Segment {
 struct SupportSurface {
   Eigen::Vector4f plane = Eigen::Vector4f::Zero();  ///< a x + b y + c z + d = 0, normal pointing up.
   std::vector<Eigen::Vector3f> polygon;              ///< Corners in order, on the plane; empty: not cropped.
+  float noise = 0.0f;  ///< The sensor's noise there (m; PreprocessedScene::table_noise); 0: unknown.
 };
 
 /// Stage name and wall time in milliseconds, in execution order; "total" last.

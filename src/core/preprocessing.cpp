@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <unordered_map>
 
 #include <pcl/features/normal_3d.h>
 #include <pcl/features/normal_3d_omp.h>
@@ -16,6 +17,7 @@
 #include "symmetry_segmentation/background_surfaces.h"
 #include "symmetry_segmentation/errors.h"
 #include "symmetry_segmentation/organized_normals.h"
+#include "symmetry_segmentation/quantile.h"
 #include "symmetry_segmentation/voxel_grid.h"
 
 namespace symmetry_segmentation {
@@ -66,6 +68,9 @@ constexpr float kTableConnectVoxels = 3.0f;
 constexpr float kGroupConnectVoxels = 2.0f;
 // A group of points above the table with this share over the table's polygon stands on it.
 constexpr float kStandingShare = 0.5f;
+constexpr float kNoiseCell = 0.02f;
+constexpr float kTableFacingCos = 0.8f;  // within ~37 deg of the table's normal
+constexpr std::size_t kMinNoiseCellPoints = 5;
 
 bool isFinitePoint(const PointT& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
@@ -168,23 +173,60 @@ void removeBackgroundSurfaces(const Cloud& coarse, const PlaneCoefficients& tabl
   }
 }
 
+// The sensor's noise: how the table's points spread about their own 2 cm cell's median height
+// (robust sigma), so that a table that is not flat (a fused map's slow drift) does not count.
+// With normals, only points facing the table's way: the objects' sides reach into its band.
+float localTableNoise(const Cloud& input, const std::vector<int>& finite, const std::vector<float>& distances,
+                      const PlaneCoefficients& plane, float band, bool has_normals) {
+  const Eigen::Vector3f up = plane.head<3>();
+  const Eigen::Vector3f e1 = up.unitOrthogonal();
+  const Eigen::Vector3f e2 = up.cross(e1);
+  std::unordered_map<std::int64_t, std::vector<float>> cells;
+  for (std::size_t k = 0; k < finite.size(); ++k) {
+    if (std::fabs(distances[k]) >= band) continue;
+    if (has_normals && !(std::fabs(input.points[finite[k]].getNormalVector3fMap().dot(up)) >= kTableFacingCos)) continue;
+    const Eigen::Vector3f p = input.points[finite[k]].getVector3fMap();
+    const auto u = static_cast<std::int64_t>(std::floor(e1.dot(p) / kNoiseCell));
+    const auto v = static_cast<std::int64_t>(std::floor(e2.dot(p) / kNoiseCell));
+    cells[(u << 32) ^ (v & 0xffffffff)].push_back(distances[k]);
+  }
+  std::vector<float> residuals;
+  for (auto& [key, heights] : cells) {
+    if (heights.size() < kMinNoiseCellPoints) continue;
+    const float median = quantileOf(heights, 0.5f);
+    for (float h : heights) residuals.push_back(std::fabs(h - median));
+  }
+  if (residuals.size() < 100) return 0.0f;
+  return 1.4826f * quantileOf(residuals, 0.5f);
+}
+
+float marginFor(const std::optional<TableSpread>& spread, const PreprocessParams& params) {
+  if (!spread) return params.table_margin;  // too few table points to tell
+  return std::clamp(spread->median + 3.0f * spread->sigma, kMinTableMargin, params.table_margin);
+}
+
 }  // namespace
 
-float adaptiveTableMargin(const std::vector<float>& distances, const PreprocessParams& params) {
+std::optional<TableSpread> tableSpread(const std::vector<float>& distances, const PreprocessParams& params) {
   // The table's own points are the bulk of those within ransac_distance of the plane; their
   // spread (median absolute deviation, scaled to a Gaussian sigma) is the sensor's noise there.
   std::vector<float> near;
   for (float d : distances) {
     if (std::fabs(d) < params.ransac_distance) near.push_back(d);
   }
-  if (near.size() < 100) return params.table_margin;  // too few table points to tell
+  if (near.size() < 100) return std::nullopt;  // too few table points to tell
   const auto middle = near.begin() + static_cast<std::ptrdiff_t>(near.size() / 2);
   std::nth_element(near.begin(), middle, near.end());
-  const float median = *middle;
-  for (float& d : near) d = std::fabs(d - median);
+  TableSpread spread;
+  spread.median = *middle;
+  for (float& d : near) d = std::fabs(d - spread.median);
   std::nth_element(near.begin(), middle, near.end());
-  const float sigma = 1.4826f * *middle;
-  return std::clamp(median + 3.0f * sigma, kMinTableMargin, params.table_margin);
+  spread.sigma = 1.4826f * *middle;
+  return spread;
+}
+
+float adaptiveTableMargin(const std::vector<float>& distances, const PreprocessParams& params) {
+  return marginFor(tableSpread(distances, params), params);
 }
 
 PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params) {
@@ -238,7 +280,10 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
       for (std::size_t k = 0; k < finite.size(); ++k) {
         distances[k] = out.table_plane.head<3>().dot(input.points[finite[k]].getVector3fMap()) + out.table_plane[3];
       }
-      out.table_margin = params.adaptive_table_margin ? adaptiveTableMargin(distances, params) : params.table_margin;
+      const std::optional<TableSpread> spread = tableSpread(distances, params);
+      out.table_noise =
+          localTableNoise(input, finite, distances, out.table_plane, params.ransac_distance, scene.has_normals);
+      out.table_margin = params.adaptive_table_margin ? marginFor(spread, params) : params.table_margin;
       const float max_height = params.max_object_height > 0.0f ? params.max_object_height
                                                                 : std::numeric_limits<float>::infinity();
       // The table's extent: only what stands over it goes on (walls, floor, background do not).
@@ -357,6 +402,7 @@ std::optional<SupportSurface> supportSurface(const PreprocessedScene& scene) {
   if (!scene.has_table) return std::nullopt;
   SupportSurface support;
   support.plane = scene.table_plane;
+  support.noise = scene.table_noise;
   if (scene.support_polygon) support.polygon = scene.support_polygon->corners();
   return support;
 }

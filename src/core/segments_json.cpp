@@ -36,6 +36,7 @@ std::string toJson(const SegmentationResult& result) {
     support["plane"] = {plane[0], plane[1], plane[2], plane[3]};
     support["polygon"] = Json::array();
     for (const auto& corner : result.support->polygon) support["polygon"].push_back({corner.x(), corner.y(), corner.z()});
+    support["noise"] = result.support->noise;
     out << " \"support\": " << support.dump() << ",\n";
   }
   out << " \"segments\": [";
@@ -150,6 +151,10 @@ SupportSurface supportSurface(const std::string& path, const Json& support) {
   for (const Json& corner : polygon) {
     const std::vector<float> xyz = finiteNumbers(path, corner, 3, "support polygon corner");
     surface.polygon.emplace_back(xyz[0], xyz[1], xyz[2]);
+  }
+  if (support.contains("noise")) {  // optional: files written before it
+    surface.noise = finiteFloat(path, support["noise"], "support noise");
+    if (surface.noise < 0.0f) malformed(path, "support noise must not be negative");
   }
   return surface;
 }
