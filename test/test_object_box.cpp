@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 
 #include <Eigen/Geometry>
 
@@ -159,3 +160,56 @@ TEST(ObjectBox, AddObjectBoxesTakesTheSupportsUpElseTheScenes) {
   EXPECT_TRUE(parallel(result.segments[0].box->axes.col(2), Eigen::Vector3f::UnitZ()));
   EXPECT_TRUE(result.segments[0].box->size.isApprox(Eigen::Vector3f(0.2f, 0.1f, 0.1f), 1e-3f));
 }
+
+namespace {
+
+/// Deterministic, roughly Gaussian values (sum of 12 uniform draws), sigma `sigma`.
+struct NoiseSource {
+  std::uint32_t state = 777;
+  float next(float sigma) {
+    float sum = 0.0f;
+    for (int k = 0; k < 12; ++k) {
+      state = state * 1664525u + 1013904223u;
+      sum += static_cast<float>(state >> 8) / 16777216.0f;
+    }
+    return sigma * (sum - 6.0f);
+  }
+};
+
+}  // namespace
+
+// A camera's depth noise spreads a board's faces to either side of them: the box of all the
+// points is far too thick. With the sensor's noise given, each end comes in towards the board,
+// never inside its true extent; and a real part sticking out (a handle) loses at most 2 sigma.
+TEST(ObjectBox, TheSensorsNoiseDoesNotThickenTheBox) {
+  const Eigen::Vector3f size(0.08f, 0.018f, 0.2f);
+  const ss::Cloud clean = boxSurface({0, 0, 0.1f}, Eigen::Matrix3f::Identity(), size, true, true, 0.003f);
+  constexpr float kSigma = 0.004f;
+  ss::Cloud noisy;
+  NoiseSource noise;
+  for (const auto& p : clean.points) noisy.push_back(point(p.getVector3fMap() + Eigen::Vector3f(0, noise.next(kSigma), 0)));
+  const ss::ObjectBox raw = ss::objectBox(noisy, allIndices(noisy), Eigen::Vector3f::UnitZ());
+  const ss::ObjectBox pulled = ss::objectBox(noisy, allIndices(noisy), Eigen::Vector3f::UnitZ(), kSigma);
+  EXPECT_GT(raw.size.y(), size.y() + 5.0f * kSigma) << "the noise widens the plain box";
+  EXPECT_LT(pulled.size.y() - size.y(), 0.75f * (raw.size.y() - size.y())) << "a quarter of the widening goes";
+  EXPECT_GT(pulled.size.y(), size.y());
+  EXPECT_NEAR(pulled.size.x(), size.x(), 0.002f);
+  EXPECT_NEAR(pulled.size.z(), size.z(), 0.002f);
+  EXPECT_NEAR(pulled.center.y(), 0.0f, kSigma);
+  // No noise given: the box of the points, as before.
+  EXPECT_TRUE(ss::objectBox(noisy, allIndices(noisy), Eigen::Vector3f::UnitZ(), 0.0f).size.isApprox(raw.size));
+
+  // A block with a handle: 3 cm out along x, dense enough to be no stray, under 1 % of the points.
+  ss::Cloud handled = boxSurface({0, 0, 0.05f}, Eigen::Matrix3f::Identity(), {0.2f, 0.1f, 0.1f}, true, true, 0.002f);
+  const std::size_t block_points = handled.size();
+  for (float t = 0.0f; t <= 0.03f + 1e-6f; t += 0.001f) {
+    for (float z = 0.045f; z <= 0.055f + 1e-6f; z += 0.0025f) handled.push_back(point({0.1f + t, 0.0f, z}));
+  }
+  ASSERT_LT(handled.size() - block_points, block_points / 100);
+  const float full = ss::objectBox(handled, allIndices(handled), Eigen::Vector3f::UnitZ()).size.x();
+  ASSERT_NEAR(full, 0.23f, 0.002f);
+  const float with_noise = ss::objectBox(handled, allIndices(handled), Eigen::Vector3f::UnitZ(), 0.002f).size.x();
+  EXPECT_GE(with_noise, full - 2.0f * 0.002f - 1e-4f);
+  EXPECT_LT(with_noise, full - 0.002f) << "the handle's last points do come in";
+}
+

@@ -21,8 +21,11 @@ namespace symmetry_segmentation {
 /// smallest area, the one whose sides most points lie on -, x the longer;
 /// size = (length along x, along y, height). Without: the points' principal axes, ordered by the
 /// box's extent along them (x the longest). Right-handed; x's sign is arbitrary. An empty box
-/// (zero size, identity axes) when no point is usable.
-ObjectBox objectBox(const Cloud& cloud, const std::vector<int>& indices, const std::optional<Eigen::Vector3f>& up);
+/// (zero size, identity axes) when no point is usable. With `noise` (the sensor's depth noise
+/// sigma at the objects, m; the support's), each end of each axis is pulled in to the 1 %
+/// quantile of the points along it, by at most 2 noise: noisy points spread past a face.
+ObjectBox objectBox(const Cloud& cloud, const std::vector<int>& indices, const std::optional<Eigen::Vector3f>& up,
+                    float noise = 0.0f);
 
 /// What is wrong with `box` as a box ("" when nothing): a value not finite, a negative size,
 /// axes that are not a rotation (unit, orthogonal, right-handed, within 1e-3). For readers of

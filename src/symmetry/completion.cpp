@@ -326,7 +326,7 @@ ObjectBox groundedBox(ObjectBox box, const std::vector<Eigen::Vector3f>& grounde
 }
 
 ObjectBox completedBox(const std::vector<Eigen::Vector3f>& visible, const std::vector<Eigen::Vector3f>& added,
-                       const std::optional<Eigen::Vector3f>& up, float trim) {
+                       const std::optional<Eigen::Vector3f>& up, float trim, float noise) {
   Cloud seen_cloud;
   seen_cloud.reserve(visible.size());
   for (const Eigen::Vector3f& p : visible) {
@@ -338,7 +338,7 @@ ObjectBox completedBox(const std::vector<Eigen::Vector3f>& visible, const std::v
   // a plane that may be a few degrees off (turning the box with it was worse on single views).
   std::vector<int> seen(visible.size());
   for (std::size_t i = 0; i < seen.size(); ++i) seen[i] = static_cast<int>(i);
-  ObjectBox box = objectBox(seen_cloud, seen, up);
+  ObjectBox box = objectBox(seen_cloud, seen, up, noise);
   if (visible.empty() || added.empty()) return box;
   // The visible box's extent (without its stray points), grown where the added points pass it by
   // more than a working voxel: within that they only restate the visible side, a plane a degree
@@ -405,9 +405,11 @@ namespace {
 /// The box the output gives `segment` (objectBox of its input points, strays left out); on the
 /// working points when the stage runs without its scene.
 ObjectBox visibleBox(const PipelineState& state, const CandidateSegment& segment) {
-  if (!state.scene || !state.scene->cloud) return objectBox(*state.cloud, segment.points, state.up);
+  const float noise = state.prepared.table_noise;
+  if (!state.scene || !state.scene->cloud) return objectBox(*state.cloud, segment.points, state.up, noise);
   const std::optional<Eigen::Vector3f> up = state.up ? state.up : state.scene->up;
-  return objectBox(*state.scene->cloud, setUnion(expandToInput(state.prepared, segment.points), segment.extra_input_points), up);
+  return objectBox(*state.scene->cloud, setUnion(expandToInput(state.prepared, segment.points), segment.extra_input_points), up,
+                   noise);
 }
 
 }  // namespace

@@ -70,7 +70,8 @@ SegmentCompletion completedObject(const PipelineState& state, const CandidateSeg
   visible.reserve(input_points.size());
   for (int index : input_points) visible.push_back(state.scene->cloud->points[index].getVector3fMap());
   const std::optional<Eigen::Vector3f> up = state.up ? state.up : state.scene->up;
-  completion.box = groundedBox(completedBox(visible, completion.points, up), candidate.grounded);
+  completion.box = groundedBox(completedBox(visible, completion.points, up, kAddedPointsTrim, state.prepared.table_noise),
+                               candidate.grounded);
   completion.points.insert(completion.points.end(), candidate.grounded.begin(), candidate.grounded.end());
   Eigen::Vector3f centroid = Eigen::Vector3f::Zero();
   for (int index : candidate.points) centroid += state.cloud->points[index].getVector3fMap();

@@ -125,8 +125,10 @@ std::vector<Eigen::Vector3f> onePerCell(const std::vector<Eigen::Vector3f>& poin
 /// single Kinect views seeds 1-2 / 8-10, RealSense seeds 1-2, realistic seeds 11-14) mean completed
 /// box IoU 0.743 / 0.734 / 0.541 / 0.757 to 0.755 / 0.744 / 0.584 / 0.761; completed boxes more
 /// than 0.2 worse than the visible points' alone 9 to 2.
+/// `noise`: the sensor's, for the visible box (objectBox).
+constexpr float kAddedPointsTrim = 0.025f;
 ObjectBox completedBox(const std::vector<Eigen::Vector3f>& visible, const std::vector<Eigen::Vector3f>& added,
-                       const std::optional<Eigen::Vector3f>& up, float trim = 0.025f);
+                       const std::optional<Eigen::Vector3f>& up, float trim = kAddedPointsTrim, float noise = 0.0f);
 
 /// The object's symmetry frame: origin = `centroid` projected onto `plane`, x = the plane's
 /// normal, z = `up` made orthogonal to x (any direction orthogonal to x when up is missing or
