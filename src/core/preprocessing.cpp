@@ -7,7 +7,6 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
-#include <unordered_map>
 
 #include <pcl/features/normal_3d.h>
 #include <pcl/features/normal_3d_omp.h>
@@ -71,6 +70,8 @@ constexpr float kStandingShare = 0.5f;
 constexpr float kNoiseCell = 0.02f;
 constexpr float kTableFacingCos = 0.8f;  // within ~37 deg of the table's normal
 constexpr std::size_t kMinNoiseCellPoints = 5;
+constexpr double kMaxNoiseCells = 4.0e6;  // 40 m x 40 m of 2 cm cells
+constexpr std::size_t kNoiseSamplePoints = 100000;
 
 bool isFinitePoint(const PointT& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
@@ -181,20 +182,48 @@ float localTableNoise(const Cloud& input, const std::vector<int>& finite, const 
   const Eigen::Vector3f up = plane.head<3>();
   const Eigen::Vector3f e1 = up.unitOrthogonal();
   const Eigen::Vector3f e2 = up.cross(e1);
-  std::unordered_map<std::int64_t, std::vector<float>> cells;
-  for (std::size_t k = 0; k < finite.size(); ++k) {
+  // The band's points by cell: cell coordinates, then a counting sort into one array.
+  std::vector<Eigen::Vector2i> cell_of;
+  std::vector<float> height;
+  Eigen::Vector2i low = Eigen::Vector2i::Constant(std::numeric_limits<int>::max());
+  Eigen::Vector2i high = Eigen::Vector2i::Constant(std::numeric_limits<int>::min());
+  // Every stride-th point: a camera frame's 2 cm cell holds some 100 pixels, a few dozen tell.
+  const std::size_t stride = std::max<std::size_t>(1, finite.size() / kNoiseSamplePoints);
+  for (std::size_t k = 0; k < finite.size(); k += stride) {
     if (std::fabs(distances[k]) >= band) continue;
     if (has_normals && !(std::fabs(input.points[finite[k]].getNormalVector3fMap().dot(up)) >= kTableFacingCos)) continue;
     const Eigen::Vector3f p = input.points[finite[k]].getVector3fMap();
-    const auto u = static_cast<std::int64_t>(std::floor(e1.dot(p) / kNoiseCell));
-    const auto v = static_cast<std::int64_t>(std::floor(e2.dot(p) / kNoiseCell));
-    cells[(u << 32) ^ (v & 0xffffffff)].push_back(distances[k]);
+    const Eigen::Vector2f uv(e1.dot(p) / kNoiseCell, e2.dot(p) / kNoiseCell);
+    if (!(uv.cwiseAbs().maxCoeff() < 1e6f)) continue;  // farther than 20 km: no table
+    const Eigen::Vector2i cell(static_cast<int>(std::floor(uv.x())), static_cast<int>(std::floor(uv.y())));
+    low = low.cwiseMin(cell);
+    high = high.cwiseMax(cell);
+    cell_of.push_back(cell);
+    height.push_back(distances[k]);
   }
+  if (height.size() < 100) return 0.0f;
+  const Eigen::Vector2i span = high - low + Eigen::Vector2i::Ones();
+  if (static_cast<double>(span.x()) * span.y() > kMaxNoiseCells) return 0.0f;  // no tabletop is that large
+  const auto flat = [&](const Eigen::Vector2i& cell) {
+    return static_cast<std::size_t>(cell.y() - low.y()) * static_cast<std::size_t>(span.x()) +
+           static_cast<std::size_t>(cell.x() - low.x());
+  };
+  std::vector<std::size_t> first(static_cast<std::size_t>(span.x()) * static_cast<std::size_t>(span.y()) + 1, 0);
+  for (const auto& cell : cell_of) ++first[flat(cell) + 1];
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  std::vector<float> by_cell(height.size());
+  std::vector<std::size_t> next(first.begin(), first.end() - 1);
+  for (std::size_t i = 0; i < height.size(); ++i) by_cell[next[flat(cell_of[i])]++] = height[i];
   std::vector<float> residuals;
-  for (auto& [key, heights] : cells) {
-    if (heights.size() < kMinNoiseCellPoints) continue;
-    const float median = quantileOf(heights, 0.5f);
-    for (float h : heights) residuals.push_back(std::fabs(h - median));
+  residuals.reserve(by_cell.size());
+  for (std::size_t c = 0; c + 1 < first.size(); ++c) {
+    const auto begin = by_cell.begin() + static_cast<std::ptrdiff_t>(first[c]);
+    const auto end = by_cell.begin() + static_cast<std::ptrdiff_t>(first[c + 1]);
+    if (end - begin < static_cast<std::ptrdiff_t>(kMinNoiseCellPoints)) continue;
+    const auto middle = begin + (end - begin - 1) / 2;
+    std::nth_element(begin, middle, end);
+    const float median = *middle;
+    for (auto it = begin; it != end; ++it) residuals.push_back(std::fabs(*it - median));
   }
   if (residuals.size() < 100) return 0.0f;
   return 1.4826f * quantileOf(residuals, 0.5f);
