@@ -164,6 +164,12 @@ TEST(SegmentsJson, RoundTripKeepsEverything) {
   ASSERT_EQ(loaded.support->polygon.size(), 3u);
   EXPECT_FLOAT_EQ(loaded.support->polygon[2].y(), 1.0f);
   EXPECT_FLOAT_EQ(loaded.support->noise, 0.0025f);
+  // Files written before the support carried the sensor's noise read as noise 0.
+  test_support::writeTextFile(dir + "/old.json",
+                              "{\"input_points\": 3, \"support\": {\"plane\": [0, 0, 1, 0], \"polygon\": []}, \"segments\": []}");
+  const auto old = ss::readSegmentsJson(dir + "/old.json");
+  ASSERT_TRUE(old.support.has_value());
+  EXPECT_EQ(old.support->noise, 0.0f);
 }
 
 TEST(SegmentsJson, MalformedFilesAreErrors) {

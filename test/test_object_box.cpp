@@ -196,6 +196,18 @@ TEST(ObjectBox, TheSensorsNoiseDoesNotThickenTheBox) {
   EXPECT_NEAR(pulled.size.x(), size.x(), 0.002f);
   EXPECT_NEAR(pulled.size.z(), size.z(), 0.002f);
   EXPECT_NEAR(pulled.center.y(), 0.0f, kSigma);
+  // Either end gives up as many points: a cloud symmetric about x = 0 (two rows, one the
+  // other's mirror image, no two points at one x) stays centred, at any size.
+  for (int per_row : {40, 150}) {
+    ss::Cloud mirrored;
+    for (int i = 0; i < per_row; ++i) {
+      const float x = -0.05f + 0.1f * static_cast<float>(i) / static_cast<float>(per_row - 1) + 0.0003f * std::sin(1.7f * i);
+      mirrored.push_back(point({x, 0.0f, 0.05f}));
+      mirrored.push_back(point({-x, 0.02f, 0.05f}));
+    }
+    const ss::ObjectBox centred = ss::objectBox(mirrored, allIndices(mirrored), Eigen::Vector3f::UnitZ(), 0.003f);
+    EXPECT_NEAR(centred.center.x(), 0.0f, 3e-4f) << per_row << " points per row";
+  }
   // No noise given: the box of the points, as before.
   EXPECT_TRUE(ss::objectBox(noisy, allIndices(noisy), Eigen::Vector3f::UnitZ(), 0.0f).size.isApprox(raw.size));
 

@@ -10,7 +10,6 @@
 #include <Eigen/Eigenvalues>
 
 #include "symmetry_segmentation/point_validity.h"
-#include "symmetry_segmentation/quantile.h"
 #include "symmetry_segmentation/sparse_cells.h"
 #include "symmetry_segmentation/voxel_grid.h"
 
@@ -132,9 +131,14 @@ ObjectBox boxAlong(const std::vector<Eigen::Vector3f>& points, const Eigen::Matr
     std::vector<float> along(points.size());
     for (int k = 0; k < 3; ++k) {
       for (std::size_t i = 0; i < points.size(); ++i) along[i] = axes.col(k).dot(points[i]);
-      const auto [share_low, share_high] = trimmedRange(along, kNoisyEndShare);
+      // The same number of points beyond either end, so that neither end is favoured.
+      const auto outside = static_cast<std::ptrdiff_t>(kNoisyEndShare * static_cast<float>(along.size() - 1));
+      std::nth_element(along.begin(), along.begin() + outside, along.end());
+      const float share_low = along[static_cast<std::size_t>(outside)];
+      const auto top = along.end() - 1 - outside;
+      std::nth_element(along.begin(), top, along.end());
       low[k] = std::min(share_low, low[k] + max_pull);
-      high[k] = std::max(share_high, high[k] - max_pull);
+      high[k] = std::max(*top, high[k] - max_pull);
     }
   }
   ObjectBox box;

@@ -58,7 +58,8 @@ SegmentedObjectArray objectsMessage(const Cloud& cloud, const SegmentationResult
                                     segment.symmetry->normal.z(), segment.symmetry->distance};
     }
     // Every method gives its segments their boxes; a result made elsewhere gets them here alike.
-    const ObjectBox box = segment.box ? *segment.box : objectBox(cloud, segment.indices, up);
+    const float noise = result.support ? result.support->noise : 0.0f;
+    const ObjectBox box = segment.box ? *segment.box : objectBox(cloud, segment.indices, up, noise);
     object.bounding_box_pose = poseOf(box.center, Eigen::Quaternionf(box.axes));
     object.bounding_box_size = vectorOf(box.size);
     if (segment.completion) {

@@ -14,7 +14,7 @@ POINTS = [(0.1, 0.2, 0.9), (-0.3, 0.05, 1.1), (0.25, -0.4, 0.8)]
 
 # segments.json as segment_scene writes it: support, planes, scores, boxes, a completion.
 SEGMENTS_JSON = """{"input_points": 10,
- "support": {"plane":[0.0,0.0,1.0,-0.7],"polygon":[[0.1,0.2,0.7],[0.9,0.2,0.7],[0.5,0.8,0.7]]},
+ "support": {"plane":[0.0,0.0,1.0,-0.7],"polygon":[[0.1,0.2,0.7],[0.9,0.2,0.7],[0.5,0.8,0.7]],"noise":0.0013},
  "segments": [
   {"indices":[0,3,9],"symmetry":{"normal":[0.0,1.0,0.0],"distance":-0.12},"scores":{"occlusion":0.98,"smoothness":0.01},"box":{"center":[0.42,0.31,0.76],"axes":[[0.8,0.6,0.0],[-0.6,0.8,0.0],[0.0,0.0,1.0]],"size":[0.2,0.1,0.12]},"completion":{"points":4,"box":{"center":[0.4,0.3,0.76],"axes":[[0.8,0.6,0.0],[-0.6,0.8,0.0],[0.0,0.0,1.0]],"size":[0.2,0.14,0.12]},"frame":{"position":[0.4,0.3,0.7],"orientation":[0.0,0.0,0.0,1.0]}}},
   {"indices":[1,2]}],

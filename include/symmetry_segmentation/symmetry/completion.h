@@ -113,6 +113,9 @@ ObjectBox groundedBox(ObjectBox box, const std::vector<Eigen::Vector3f>& grounde
 /// The first of `points` in each `cell`-sized cube, in order.
 std::vector<Eigen::Vector3f> onePerCell(const std::vector<Eigen::Vector3f>& points, float cell);
 
+/// The share of the added points left out at either end of each axis (stray reflections).
+constexpr float kAddedPointsTrim = 0.025f;
+
 /// The box of the completed object: turned as objectBox turns the visible points, bounded by
 /// the visible box (objectBox: without stray points) and, where they pass it by more than a
 /// working voxel (1 cm), by the added points less the `trim` share at either end of each axis
@@ -126,7 +129,6 @@ std::vector<Eigen::Vector3f> onePerCell(const std::vector<Eigen::Vector3f>& poin
 /// box IoU 0.743 / 0.734 / 0.541 / 0.757 to 0.755 / 0.744 / 0.584 / 0.761; completed boxes more
 /// than 0.2 worse than the visible points' alone 9 to 2.
 /// `noise`: the sensor's, for the visible box (objectBox).
-constexpr float kAddedPointsTrim = 0.025f;
 ObjectBox completedBox(const std::vector<Eigen::Vector3f>& visible, const std::vector<Eigen::Vector3f>& added,
                        const std::optional<Eigen::Vector3f>& up, float trim = kAddedPointsTrim, float noise = 0.0f);
 
