@@ -5,6 +5,7 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <memory>
 #include <optional>
 
 #include <pcl/kdtree/kdtree_flann.h>
@@ -27,7 +28,7 @@ constexpr float kHeightTrim = 0.05f;
 std::pair<Eigen::Vector3f, float> closestApproach(const Cloud& cloud, const std::vector<int>& first,
                                                   const std::vector<int>& second) {
   if (first.empty() || second.empty()) return {Eigen::Vector3f::Zero(), std::numeric_limits<float>::infinity()};
-  pcl::PointCloud<pcl::PointXYZ>::Ptr first_points(new pcl::PointCloud<pcl::PointXYZ>);
+  auto first_points = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();  // new and delete alike (ASan)
   for (int i : first) first_points->push_back(pcl::PointXYZ(cloud[i].x, cloud[i].y, cloud[i].z));
   pcl::KdTreeFLANN<pcl::PointXYZ> tree;
   tree.setInputCloud(first_points);

@@ -38,7 +38,9 @@ class TableSightings {
 
  private:
   std::pair<std::int64_t, std::int64_t> cellOf(const Eigen::Vector3f& p) const;
-  static std::int64_t key(std::int64_t x, std::int64_t y) { return (x << 32) ^ (y & 0xffffffff); }
+  static std::int64_t key(std::int64_t x, std::int64_t y) {
+    return static_cast<std::int64_t>(static_cast<std::uint64_t>(x) << 32) ^ (y & 0xffffffff);  // no shift of a negative
+  }
 
   Eigen::Vector3f e1_, e2_;
   float cell_;
