@@ -185,8 +185,8 @@ float localTableNoise(const Cloud& input, const std::vector<int>& finite, const 
   const Eigen::Vector3f e1 = up.unitOrthogonal();
   const Eigen::Vector3f e2 = up.cross(e1);
   const auto in_band = [&](std::size_t k) { return std::fabs(distances[k]) < band; };
-  const std::size_t band_points = static_cast<std::size_t>(
-      std::count_if(distances.begin(), distances.end(), [&](float d) { return std::fabs(d) < band; }));
+  std::size_t band_points = 0;
+  for (std::size_t k = 0; k < distances.size(); ++k) band_points += in_band(k) ? 1 : 0;
   // Every stride-th band point: a camera frame's 2 cm cell holds some 100 pixels, a few dozen tell.
   const std::size_t stride = std::max<std::size_t>(1, band_points / kNoiseSamplePoints);
   const auto samples = [&](bool facing_only) {
