@@ -121,3 +121,42 @@ TEST(ObjectFloors, ABowlsFloorRejoinsItAndTableBesideObjectsStaysOut) {
                           Part::BowlFloor),
             0);
 }
+
+TEST(ObjectFloors, NoFloorUnderABoardHeldOverTheTable) {
+  // The table seen all over (a camera sees it under a shelf from the side), and two flat boxes
+  // 20 x 20 cm: one 4 cm tall standing on it, one 2 cm thick held 35 cm over it (a shelf). The
+  // footprint of either encloses the table under it; only the standing one has a floor there.
+  ss::Scene scene;
+  scene.cloud = std::make_shared<ss::Cloud>();
+  std::vector<int> standing, shelf;
+  const auto add = [&](float x, float y, float z, std::vector<int>* part) {
+    ss::PointT p;
+    p.x = x;
+    p.y = y;
+    p.z = z;
+    p.getNormalVector3fMap() = Eigen::Vector3f::UnitZ();
+    if (part != nullptr) part->push_back(static_cast<int>(scene.cloud->size()));
+    scene.cloud->push_back(p);
+  };
+  const float step = 0.005f;
+  for (float x = -0.4f; x <= 0.4f; x += step) {
+    for (float y = -0.2f; y <= 0.2f; y += step) add(x, y, 0.0f, nullptr);
+  }
+  for (float x = -0.3f; x <= -0.1f; x += step) {
+    for (float y = -0.1f; y <= 0.1f; y += step) {
+      add(x, y, 0.04f, &standing);
+      add(x + 0.4f, y, 0.35f, &shelf);
+    }
+  }
+  scene.has_normals = true;
+  scene.table_plane = ss::PlaneCoefficients(0.0f, 0.0f, 1.0f, 0.0f);
+  ss::PreprocessParams preprocessing;
+  preprocessing.adaptive_table_margin = false;
+  preprocessing.table_margin = 0.01f;
+  const ss::PreprocessedScene prepared = ss::preprocess(scene, preprocessing);
+
+  const auto floors = ss::enclosedFloors(scene, prepared, {standing, shelf}, {}, ss::FloorParams{});
+  ASSERT_EQ(floors.size(), 2u);
+  EXPECT_GT(floors[0].size(), 500u) << "the table hidden under the standing box";
+  EXPECT_TRUE(floors[1].empty()) << floors[1].size() << " points of the table under the shelf";
+}

@@ -1,7 +1,9 @@
 // Stage object_size: walls and table remnants are dropped, objects (with a few stray points) stay.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <numeric>
+#include <string>
 
 #include "symmetry_segmentation/symmetry/object_size.h"
 #include "symmetry_segmentation/symmetry/pipeline_state.h"
@@ -150,11 +152,11 @@ TEST(ObjectSize, AThinObjectHidesTheTableUnderItTheTablesNoiseDoesNot) {
 
   const ss::PlaneCoefficients table(0.0f, 0.0f, 1.0f, 0.0f);
   const ss::TableSightings sightings(*input.cloud, table, 0.005f, 0.01f);
-  EXPECT_LT(sightings.seenShareUnder(*working, board), 0.1f);
-  EXPECT_GT(sightings.seenShareUnder(*working, scrap), 0.9f);
-  // Scattered points (no inner cell of their footprint) hide nothing.
+  EXPECT_LT(sightings.seenShareUnder(*working, board).value_or(1.0f), 0.1f);
+  EXPECT_GT(sightings.seenShareUnder(*working, scrap).value_or(0.0f), 0.9f);
+  // Scattered points (no inner cell of their footprint) tell nothing.
   const std::vector<int> scattered = {board[0], board[40], scrap[0]};
-  EXPECT_FLOAT_EQ(sightings.seenShareUnder(*working, scattered), 1.0f);
+  EXPECT_FALSE(sightings.seenShareUnder(*working, scattered).has_value());
 
   ss::PipelineState state;
   state.scene = &input;
@@ -186,4 +188,51 @@ TEST(ObjectSize, AThinObjectHidesTheTableUnderItTheTablesNoiseDoesNot) {
   state.segments[1].points = scrap;
   ss::ObjectSizeStage(params, 0.01f).run(state);
   EXPECT_TRUE(state.segments.empty());
+}
+
+TEST(ObjectSize, AShelfOverTheTableIsNoObjectWhatIsSeenOverAnOccluderIs) {
+  // The table seen everywhere but under a box standing at x, y in [-0.2, -0.1]; a shelf board
+  // 35 cm over the table at x in [0.05, 0.2] (the table seen under it, from the side), and the
+  // top 4 cm of an object behind the box, its lower part hidden by the box, over the box's
+  // footprint (the table hidden there too).
+  const auto under_box = [](float x, float y) { return x > -0.21f && x < -0.09f && y > -0.21f && y < -0.09f; };
+  ss::Scene input;
+  input.cloud = std::make_shared<ss::Cloud>();
+  addSeenTable(*input.cloud, under_box);
+  auto working = std::make_shared<ss::Cloud>();
+  const std::vector<int> shelf = addFlatTop(*working, 0.05f, 0.2f, -0.1f, 0.1f, 0.35f);
+  std::vector<int> behind = addFlatTop(*working, -0.19f, -0.11f, -0.19f, -0.11f, 0.2f);
+  for (int k = 0; k < 4; ++k) {  // its face toward the box, from 16 cm up
+    for (float x = -0.19f; x <= -0.11f + 1e-4f; x += 0.01f) {
+      behind.push_back(static_cast<int>(working->size()));
+      working->push_back(at(x, -0.19f, 0.16f + 0.01f * k));
+    }
+  }
+  for (const auto& point : *working) input.cloud->push_back(point);
+
+  ss::PipelineState state;
+  state.scene = &input;
+  state.cloud = working;
+  state.prepared.has_table = true;
+  state.prepared.table_plane = ss::PlaneCoefficients(0.0f, 0.0f, 1.0f, 0.0f);
+  state.prepared.table_margin = 0.005f;
+  state.up = Eigen::Vector3f::UnitZ();
+  state.segments.resize(2);
+  state.segments[0].points = shelf;
+  state.segments[1].points = behind;
+  ss::ObjectSizeParams params;
+  ASSERT_GT(params.min_table_seen_under_raised, 0.0f);
+  ss::ObjectSizeStage(params, 0.01f).run(state);
+  ASSERT_EQ(state.segments.size(), 1u);
+  EXPECT_EQ(state.segments[0].points, behind);
+  const auto hanging = std::find_if(state.counts.begin(), state.counts.end(),
+                                    [](const auto& count) { return count.first.find("hanging") != std::string::npos; });
+  ASSERT_NE(hanging, state.counts.end());
+  EXPECT_EQ(hanging->second, 1u);
+  // Switched off, the shelf stays.
+  params.min_table_seen_under_raised = 0.0f;
+  state.segments.resize(2);
+  state.segments[1].points = shelf;
+  ss::ObjectSizeStage(params, 0.01f).run(state);
+  EXPECT_EQ(state.segments.size(), 2u);
 }

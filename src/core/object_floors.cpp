@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "symmetry_segmentation/point_validity.h"
+#include "symmetry_segmentation/raised_off_table.h"
 #include "symmetry_segmentation/sparse_cells.h"
 
 namespace symmetry_segmentation {
@@ -13,6 +14,9 @@ namespace {
 // A footprint wider than this (m) is no graspable object's (object_size drops those over 0.5 m);
 // its pockets are not looked for, which also bounds the rays' work.
 constexpr float kMaxFootprintSide = 1.0f;
+// A floor lies under a segment that stands on the table, not under one raised off it by more
+// than this many cells (a shelf over the table encloses the table it hides all the same).
+constexpr float kMinRaisedCells = 3.0f;
 
 /// The cell of the table's grid (axes e1, e2, side `cell`) a point lies over.
 std::pair<int, int> cellOf(const Eigen::Vector3f& p, const Eigen::Vector3f& e1, const Eigen::Vector3f& e2, float cell) {
@@ -159,22 +163,26 @@ std::vector<std::vector<int>> enclosedFloors(const Scene& scene, const Preproces
   const Eigen::Vector3f e1 = up.cross(helper).normalized();
   const Eigen::Vector3f e2 = up.cross(e1);
 
+  const auto height = [&](const Eigen::Vector3f& p) { return up.dot(p) + prepared.table_plane[3] / up_norm; };
   std::vector<Footprint> footprints;
   footprints.reserve(segments.size());
   for (const std::vector<int>& segment : segments) {
     std::vector<Eigen::Vector3f> usable;
+    std::vector<float> heights;
     for (int i : segment) {
       if (i >= 0 && static_cast<std::size_t>(i) < input.size() && isUsablePoint(input[i])) {
         usable.push_back(input[i].getVector3fMap());
+        heights.push_back(height(usable.back()));
       }
     }
+    if (raisedBase(heights, prepared.table_margin, kMinRaisedCells * params.cell)) usable.clear();  // no floor
     footprints.emplace_back(withoutSparseCells(usable), e1, e2, params);
   }
   for (std::size_t i = 0; i < input.size(); ++i) {
     if (prepared.input_to_voxel[i] >= 0) continue;
     const PointT& p = input[i];
     if (!isUsablePoint(p) || !scene.inRegionOfInterest(p.getVector3fMap())) continue;
-    const float h = (up.dot(p.getVector3fMap()) * up_norm + prepared.table_plane[3]) / up_norm;
+    const float h = height(p.getVector3fMap());
     if (h < -prepared.table_margin || h > prepared.table_margin) continue;
     if (std::binary_search(taken.begin(), taken.end(), static_cast<int>(i))) continue;
     const auto cell = cellOf(p.getVector3fMap(), e1, e2, params.cell);

@@ -14,6 +14,7 @@
 #include <pcl/segmentation/sac_segmentation.h>
 
 #include "symmetry_segmentation/quantile.h"
+#include "symmetry_segmentation/symmetry/hanging_segments.h"
 #include "symmetry_segmentation/symmetry/pipeline_state.h"
 
 namespace symmetry_segmentation {
@@ -122,7 +123,7 @@ std::pair<std::int64_t, std::int64_t> TableSightings::cellOf(const Eigen::Vector
           static_cast<std::int64_t>(std::floor(p.dot(e2_) / cell_))};
 }
 
-float TableSightings::seenShareUnder(const Cloud& cloud, const std::vector<int>& points) const {
+std::optional<float> TableSightings::seenShareUnder(const Cloud& cloud, const std::vector<int>& points) const {
   std::unordered_set<std::int64_t> footprint;
   std::vector<std::pair<std::int64_t, std::int64_t>> cells;
   for (int i : points) {
@@ -139,7 +140,8 @@ float TableSightings::seenShareUnder(const Cloud& cloud, const std::vector<int>&
     ++inner;
     if (seen_.count(key(x, y)) > 0) ++seen;
   }
-  return inner == 0 ? 1.0f : static_cast<float>(seen) / static_cast<float>(inner);
+  if (inner == 0) return std::nullopt;
+  return static_cast<float>(seen) / static_cast<float>(inner);
 }
 
 float topHeight(const Cloud& cloud, const std::vector<int>& points, const PlaneCoefficients& table_plane) {
@@ -170,17 +172,39 @@ void ObjectSizeStage::run(PipelineState& state) const {
     if (!table_seen) {
       table_seen.emplace(*state.scene->cloud, state.prepared.table_plane, state.prepared.table_margin, voxel_size_);
     }
-    if (table_seen->seenShareUnder(*state.cloud, segment.points) >= params_.max_table_seen_share) return true;
+    // A footprint with no inner cell hides nothing.
+    if (table_seen->seenShareUnder(*state.cloud, segment.points).value_or(1.0f) >= params_.max_table_seen_share) {
+      return true;
+    }
     ++thin_kept;
     return false;
+  };
+  const bool check_hanging = params_.min_table_seen_under_raised > 0.0f && state.prepared.has_table &&
+                             state.scene != nullptr && state.scene->cloud;
+  std::size_t hanging = 0;
+  const auto hangs = [&](const CandidateSegment& segment) {
+    if (!restsOnNothing(*state.cloud, segment.points, state.prepared.table_plane, state.prepared.table_margin,
+                        voxel_size_)) {
+      return false;
+    }
+    if (!table_seen) {
+      table_seen.emplace(*state.scene->cloud, state.prepared.table_plane, state.prepared.table_margin, voxel_size_);
+    }
+    // Under an object seen over another in front of it the table is hidden; under a shelf, seen.
+    const std::optional<float> seen = table_seen->seenShareUnder(*state.cloud, segment.points);
+    const bool result = seen && *seen >= params_.min_table_seen_under_raised;
+    hanging += result ? 1 : 0;
+    return result;
   };
   state.segments.erase(std::remove_if(state.segments.begin(), state.segments.end(),
                                       [&](const CandidateSegment& segment) {
                                         if (check_top && tableScrap(segment)) return true;
-                                        return !hasObjectSize(state.cloud, segment.points, state.up, params_, plane_distance);
+                                        if (!hasObjectSize(state.cloud, segment.points, state.up, params_, plane_distance)) return true;
+                                        return check_hanging && hangs(segment);
                                       }),
                        state.segments.end());
   state.count("thin_kept", thin_kept);
+  state.count("hanging", hanging);
   state.count("dropped", before - state.segments.size());
 }
 

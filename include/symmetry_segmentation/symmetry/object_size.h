@@ -32,9 +32,8 @@ class TableSightings {
  public:
   TableSightings(const Cloud& input, const PlaneCoefficients& table_plane, float band, float cell);
   /// The share of the inner cells of the footprint of `points` (cells whose 8 neighbours hold
-  /// points too) in which the table was seen; 1 when the footprint has no inner cell (scattered
-  /// points are no surface that could hide anything).
-  float seenShareUnder(const Cloud& cloud, const std::vector<int>& points) const;
+  /// points too) in which the table was seen; none when the footprint has no inner cell.
+  std::optional<float> seenShareUnder(const Cloud& cloud, const std::vector<int>& points) const;
 
  private:
   std::pair<std::int64_t, std::int64_t> cellOf(const Eigen::Vector3f& p) const;

@@ -397,6 +397,7 @@ struct ObjectSizeParams {
   float min_plane_share = 0.9f;
   float min_top_height = 0.015f;
   float max_table_seen_share = 0.5f;
+  float min_table_seen_under_raised = 0.5f;
 };
 
 inline void describeParameters(ParameterList<ObjectSizeParams>& list) {
@@ -409,7 +410,9 @@ inline void describeParameters(ParameterList<ObjectSizeParams>& list) {
       .add("min_top_height", &P::min_top_height, 0.0, 1.0, "m",
            "a segment whose top (95th percentile) is lower over the table is a scrap of the table's noise; 0: off")
       .add("max_table_seen_share", &P::max_table_seen_share, 0.0, 1.0, "",
-           "...unless the table was seen under less than this share of its footprint's inside: a thin object lying on the table hides it, the table's noise has it all through");
+           "...unless the table was seen under less than this share of its footprint's inside: a thin object lying on the table hides it, the table's noise has it all through")
+      .add("min_table_seen_under_raised", &P::min_table_seen_under_raised, 0.0, 1.0, "",
+           "a segment resting on nothing (the gap under it taller than itself, nothing under its footprint) with the table seen under this share of its footprint's inside hangs over the table (a shelf): dropped; 0: off");
 }
 
 /// Stage dedup: one segment per object.

@@ -1,0 +1,24 @@
+#pragma once
+// What rests on nothing is no tabletop object. A board hung over the table (a shelf) is
+// mirror-symmetric like an object and passes every symmetry test; an object stands on the table
+// or on another object. A segment rests on nothing when it is raised off the table (the gap
+// under it wider than it is tall: raised_off_table.h) and no other point lies under its
+// footprint within a few centimetres of its base (an object stacked on another has that
+// object's sides under it).
+// object_size drops such a segment when the table was also seen under it (a shelf); the part of
+// an object seen over another in front of it also rests on nothing in view, but the table under
+// it is hidden.
+
+#include <vector>
+
+#include "symmetry_segmentation/scene.h"
+
+namespace symmetry_segmentation {
+
+/// Whether `points` of `cloud` rest on nothing (see above): raised off `table_plane` by more than
+/// three `cell`s over `table_margin`, and no other point of `cloud` one to five cells under their
+/// base over their footprint (cells of side `cell`, grown by one).
+bool restsOnNothing(const Cloud& cloud, const std::vector<int>& points, const PlaneCoefficients& table_plane,
+                    float table_margin, float cell);
+
+}  // namespace symmetry_segmentation

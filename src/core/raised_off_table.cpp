@@ -1,0 +1,24 @@
+// A segment raised off the table (see the header for why).
+#include "symmetry_segmentation/raised_off_table.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "symmetry_segmentation/quantile.h"
+
+namespace symmetry_segmentation {
+namespace {
+constexpr float kBaseQuantile = 0.02f;
+constexpr float kTopQuantile = 0.98f;
+}  // namespace
+
+std::optional<float> raisedBase(std::vector<float>& heights, float table_margin, float min_gap) {
+  if (heights.empty()) return std::nullopt;
+  const float base = quantileOf(heights, kBaseQuantile);
+  const float top = quantileOf(heights, kTopQuantile);
+  const float gap = base - table_margin;
+  if (!(std::isfinite(gap) && std::isfinite(top) && gap > std::max(min_gap, top - base))) return std::nullopt;
+  return base;
+}
+
+}  // namespace symmetry_segmentation
