@@ -123,8 +123,8 @@ TEST(ObjectFloors, ABowlsFloorRejoinsItAndTableBesideObjectsStaysOut) {
 }
 
 TEST(ObjectFloors, NoFloorUnderABoardHeldOverTheTable) {
-  // The table seen all over (a camera sees it under a shelf from the side), and two flat boxes
-  // 20 x 20 cm: one 4 cm tall standing on it, one 2 cm thick held 35 cm over it (a shelf). The
+  // The table seen all over (a camera sees it under a shelf from the side), and two flat tops
+  // 20 x 20 cm: one 3 cm over it (a box standing on it), one 35 cm over it (a shelf). The
   // footprint of either encloses the table under it; only the standing one has a floor there.
   ss::Scene scene;
   scene.cloud = std::make_shared<ss::Cloud>();
@@ -144,7 +144,7 @@ TEST(ObjectFloors, NoFloorUnderABoardHeldOverTheTable) {
   }
   for (float x = -0.3f; x <= -0.1f; x += step) {
     for (float y = -0.1f; y <= 0.1f; y += step) {
-      add(x, y, 0.04f, &standing);
+      add(x, y, 0.03f, &standing);
       add(x + 0.4f, y, 0.35f, &shelf);
     }
   }

@@ -10,7 +10,8 @@
 
 namespace symmetry_segmentation {
 
-/// `heights`: the segment's points' heights over the table (reordered). Its base and top are
+/// `heights`: the segment's points' heights over the table (reordered; values that are not
+/// finite are dropped from it). Its base and top are
 /// their 2nd and 98th percentiles (a few strays of a neighbour aside). The base when the gap
 /// between `table_margin` and it is wider than `min_gap` and than top - base; else (and when
 /// empty) none.

@@ -14,8 +14,9 @@ namespace {
 // A footprint wider than this (m) is no graspable object's (object_size drops those over 0.5 m);
 // its pockets are not looked for, which also bounds the rays' work.
 constexpr float kMaxFootprintSide = 1.0f;
-// A floor lies under a segment that stands on the table, not under one raised off it by more
-// than this many cells (a shelf over the table encloses the table it hides all the same).
+// A floor lies under a segment that stands on the table, not under one raised off it
+// (raised_off_table.h: the gap under it wider than this many cells and than it is tall; a shelf
+// over the table encloses the table seen under it all the same).
 constexpr float kMinRaisedCells = 3.0f;
 
 /// The cell of the table's grid (axes e1, e2, side `cell`) a point lies over.

@@ -13,11 +13,12 @@ constexpr float kTopQuantile = 0.98f;
 }  // namespace
 
 std::optional<float> raisedBase(std::vector<float>& heights, float table_margin, float min_gap) {
+  heights.erase(std::remove_if(heights.begin(), heights.end(), [](float h) { return !std::isfinite(h); }), heights.end());
   if (heights.empty()) return std::nullopt;
   const float base = quantileOf(heights, kBaseQuantile);
   const float top = quantileOf(heights, kTopQuantile);
   const float gap = base - table_margin;
-  if (!(std::isfinite(gap) && std::isfinite(top) && gap > std::max(min_gap, top - base))) return std::nullopt;
+  if (!(gap > std::max(min_gap, top - base))) return std::nullopt;
   return base;
 }
 

@@ -1,13 +1,14 @@
 // Segments that rest on nothing (see the header for why).
 #include "symmetry_segmentation/symmetry/hanging_segments.h"
 
-#include <cmath>
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <unordered_set>
-#include <utility>
 
+#include "symmetry_segmentation/point_validity.h"
 #include "symmetry_segmentation/raised_off_table.h"
+#include "symmetry_segmentation/table_grid.h"
 
 namespace symmetry_segmentation {
 namespace {
@@ -18,64 +19,38 @@ constexpr float kMinGapCells = 3.0f;
 // be what the segment rests on.
 constexpr float kHoldingCells = 5.0f;
 
-/// Cells of side `cell` on a grid in the plane normal to `up`.
-class FootprintCells {
- public:
-  FootprintCells(const Eigen::Vector3f& up, float cell) : e1_(up.unitOrthogonal()), e2_(up.cross(e1_)), cell_(cell) {}
-  /// The cell of `p` and its 8 neighbours.
-  void addGrown(const Eigen::Vector3f& p) {
-    const auto [x, y] = cellOf(p);
-    for (std::int64_t dx = -1; dx <= 1; ++dx) {
-      for (std::int64_t dy = -1; dy <= 1; ++dy) cells_.insert(key(x + dx, y + dy));
-    }
-  }
-  bool contains(const Eigen::Vector3f& p) const {
-    const auto [x, y] = cellOf(p);
-    return cells_.count(key(x, y)) > 0;
-  }
-
- private:
-  std::pair<std::int64_t, std::int64_t> cellOf(const Eigen::Vector3f& p) const {
-    return {static_cast<std::int64_t>(std::floor(e1_.dot(p) / cell_)),
-            static_cast<std::int64_t>(std::floor(e2_.dot(p) / cell_))};
-  }
-  static std::int64_t key(std::int64_t x, std::int64_t y) {
-    return static_cast<std::int64_t>(static_cast<std::uint64_t>(x) << 32) ^ (y & 0xffffffff);  // no shift of a negative
-  }
-
-  Eigen::Vector3f e1_, e2_;
-  float cell_;
-  std::unordered_set<std::int64_t> cells_;
-};
-
 }  // namespace
 
 bool restsOnNothing(const Cloud& cloud, const std::vector<int>& points, const PlaneCoefficients& table_plane,
                     float table_margin, float cell) {
-  const float norm = table_plane.head<3>().norm();
-  if (points.empty() || !(norm > 0.0f) || !(cell > 0.0f)) return false;
-  const Eigen::Vector3f up = table_plane.head<3>() / norm;
-  const float offset = table_plane[3] / norm;
-  const auto height = [&](const Eigen::Vector3f& p) { return up.dot(p) + offset; };
-
+  if (!(table_plane.head<3>().norm() > 0.0f) || !(cell > 0.0f)) return false;
+  const TableGrid grid(table_plane, cell);
+  std::vector<int> usable;  // sorted, for the membership test below
   std::vector<float> heights;
-  heights.reserve(points.size());
-  for (int i : points) heights.push_back(height(cloud[i].getVector3fMap()));
-  const std::optional<float> raised = raisedBase(heights, table_margin, kMinGapCells * cell);
-  if (!raised) return false;
-  const float base = *raised;
-
-  FootprintCells footprint(up, cell);
-  std::vector<char> inside(cloud.size(), 0);
   for (int i : points) {
-    inside[i] = 1;
-    footprint.addGrown(cloud[i].getVector3fMap());
+    if (i < 0 || static_cast<std::size_t>(i) >= cloud.size() || !isUsablePoint(cloud[i])) continue;
+    usable.push_back(i);
+    heights.push_back(grid.height(cloud[i].getVector3fMap()));
+  }
+  const std::optional<float> base = raisedBase(heights, table_margin, kMinGapCells * cell);
+  if (!base) return false;
+
+  // Anything else under the footprint (grown by a cell), just below the base, may hold it up.
+  std::sort(usable.begin(), usable.end());
+  std::unordered_set<std::int64_t> footprint;
+  for (int i : usable) {
+    const auto [x, y] = grid.cellOf(cloud[i].getVector3fMap());
+    for (std::int64_t dx = -1; dx <= 1; ++dx) {
+      for (std::int64_t dy = -1; dy <= 1; ++dy) footprint.insert(TableGrid::key(x + dx, y + dy));
+    }
   }
   for (std::size_t j = 0; j < cloud.size(); ++j) {
-    if (inside[j]) continue;
+    if (!isUsablePoint(cloud[j])) continue;
     const Eigen::Vector3f p = cloud[j].getVector3fMap();
-    const float h = height(p);
-    if (h >= base - kHoldingCells * cell && h <= base - cell && footprint.contains(p)) return false;
+    const float h = grid.height(p);
+    if (h < *base - kHoldingCells * cell || h > *base - cell) continue;
+    if (footprint.count(TableGrid::key(grid.cellOf(p))) == 0) continue;
+    if (!std::binary_search(usable.begin(), usable.end(), static_cast<int>(j))) return false;
   }
   return true;
 }

@@ -103,42 +103,30 @@ std::vector<int> largestPlanePoints(const Cloud::ConstPtr& cloud, const std::vec
 }
 
 TableSightings::TableSightings(const Cloud& input, const PlaneCoefficients& table_plane, float band, float cell)
-    : cell_(cell) {
-  const float norm = table_plane.head<3>().norm();
-  const Eigen::Vector3f normal = table_plane.head<3>() / norm;
-  e1_ = normal.unitOrthogonal();
-  e2_ = normal.cross(e1_);
+    : grid_(table_plane, cell) {
   for (const PointT& point : input) {
     const Eigen::Vector3f p = point.getVector3fMap();
-    const float height = normal.dot(p) + table_plane[3] / norm;
-    if (std::isfinite(height) && std::abs(height) <= band) {
-      const auto [x, y] = cellOf(p);
-      seen_.insert(key(x, y));
-    }
+    const float height = grid_.height(p);
+    if (std::isfinite(height) && std::abs(height) <= band) seen_.insert(TableGrid::key(grid_.cellOf(p)));
   }
-}
-
-std::pair<std::int64_t, std::int64_t> TableSightings::cellOf(const Eigen::Vector3f& p) const {
-  return {static_cast<std::int64_t>(std::floor(p.dot(e1_) / cell_)),
-          static_cast<std::int64_t>(std::floor(p.dot(e2_) / cell_))};
 }
 
 std::optional<float> TableSightings::seenShareUnder(const Cloud& cloud, const std::vector<int>& points) const {
   std::unordered_set<std::int64_t> footprint;
-  std::vector<std::pair<std::int64_t, std::int64_t>> cells;
+  std::vector<TableGrid::Cell> cells;
   for (int i : points) {
-    const auto cell = cellOf(cloud[i].getVector3fMap());
-    if (footprint.insert(key(cell.first, cell.second)).second) cells.push_back(cell);
+    const TableGrid::Cell cell = grid_.cellOf(cloud[i].getVector3fMap());
+    if (footprint.insert(TableGrid::key(cell)).second) cells.push_back(cell);
   }
   std::size_t inner = 0, seen = 0;
   for (const auto& [x, y] : cells) {
     bool surrounded = true;
     for (std::int64_t dx = -1; dx <= 1 && surrounded; ++dx) {
-      for (std::int64_t dy = -1; dy <= 1 && surrounded; ++dy) surrounded = footprint.count(key(x + dx, y + dy)) > 0;
+      for (std::int64_t dy = -1; dy <= 1 && surrounded; ++dy) surrounded = footprint.count(TableGrid::key(x + dx, y + dy)) > 0;
     }
     if (!surrounded) continue;
     ++inner;
-    if (seen_.count(key(x, y)) > 0) ++seen;
+    if (seen_.count(TableGrid::key(x, y)) > 0) ++seen;
   }
   if (inner == 0) return std::nullopt;
   return static_cast<float>(seen) / static_cast<float>(inner);

@@ -17,7 +17,8 @@ namespace symmetry_segmentation {
 
 /// Whether `points` of `cloud` rest on nothing (see above): raised off `table_plane` by more than
 /// three `cell`s over `table_margin`, and no other point of `cloud` one to five cells under their
-/// base over their footprint (cells of side `cell`, grown by one).
+/// base over their footprint (cells of side `cell`, grown by one). Indices out of range and points
+/// that are not finite are left out.
 bool restsOnNothing(const Cloud& cloud, const std::vector<int>& points, const PlaneCoefficients& table_plane,
                     float table_margin, float cell);
 

@@ -18,6 +18,7 @@
 #include <Eigen/Core>
 
 #include "symmetry_segmentation/scene.h"
+#include "symmetry_segmentation/table_grid.h"
 #include "symmetry_segmentation/symmetry/stage.h"
 #include "symmetry_segmentation/symmetry/symmetry_params.h"
 
@@ -36,13 +37,7 @@ class TableSightings {
   std::optional<float> seenShareUnder(const Cloud& cloud, const std::vector<int>& points) const;
 
  private:
-  std::pair<std::int64_t, std::int64_t> cellOf(const Eigen::Vector3f& p) const;
-  static std::int64_t key(std::int64_t x, std::int64_t y) {
-    return static_cast<std::int64_t>(static_cast<std::uint64_t>(x) << 32) ^ (y & 0xffffffff);  // no shift of a negative
-  }
-
-  Eigen::Vector3f e1_, e2_;
-  float cell_;
+  TableGrid grid_;
   std::unordered_set<std::int64_t> seen_;
 };
 
