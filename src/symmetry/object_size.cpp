@@ -23,6 +23,10 @@ namespace {
 constexpr int kPlaneIterations = 200;
 // A thin object's top stands this many table margins over the table (see ObjectSizeStage::run).
 constexpr float kThinObjectMargins = 2.0f;
+// Below the table's level: deeper than a table top is thick, higher than a chair's seat sits
+// under it (the floor under an object at the edge says nothing of it).
+constexpr float kBelowTableTop = 0.06f;
+constexpr float kDeepestBelowTable = 0.5f;
 // Share of the points left out at either end of an extent.
 constexpr float kTrim = 0.05f;
 
@@ -102,16 +106,33 @@ std::vector<int> largestPlanePoints(const Cloud::ConstPtr& cloud, const std::vec
   return std::vector<int>(inliers.indices.begin(), inliers.indices.end());
 }
 
-TableSightings::TableSightings(const Cloud& input, const PlaneCoefficients& table_plane, float band, float cell)
+HeightSightings::HeightSightings(const Cloud& input, const PlaneCoefficients& table_plane, float low, float high,
+                                 float cell)
     : grid_(table_plane, cell) {
   for (const PointT& point : input) {
     const Eigen::Vector3f p = point.getVector3fMap();
     const float height = grid_.height(p);
-    if (std::isfinite(height) && std::abs(height) <= band) seen_.insert(TableGrid::key(grid_.cellOf(p)));
+    if (std::isfinite(height) && height >= low && height <= high) seen_.insert(TableGrid::key(grid_.cellOf(p)));
   }
 }
 
-std::optional<float> TableSightings::seenShareUnder(const Cloud& cloud, const std::vector<int>& points) const {
+std::optional<float> HeightSightings::seenShareBeside(const Cloud& cloud, const std::vector<int>& points) const {
+  std::unordered_set<std::int64_t> footprint;
+  std::size_t seen = 0;
+  for (int i : points) {
+    const auto [x, y] = grid_.cellOf(cloud[i].getVector3fMap());
+    if (!footprint.insert(TableGrid::key(x, y)).second) continue;
+    bool near = false;
+    for (std::int64_t dx = -1; dx <= 1 && !near; ++dx) {
+      for (std::int64_t dy = -1; dy <= 1 && !near; ++dy) near = seen_.count(TableGrid::key(x + dx, y + dy)) > 0;
+    }
+    seen += near ? 1 : 0;
+  }
+  if (footprint.empty()) return std::nullopt;
+  return static_cast<float>(seen) / static_cast<float>(footprint.size());
+}
+
+std::optional<float> HeightSightings::seenShareUnder(const Cloud& cloud, const std::vector<int>& points) const {
   std::unordered_set<std::int64_t> footprint;
   std::vector<TableGrid::Cell> cells;
   for (int i : points) {
@@ -145,8 +166,15 @@ void ObjectSizeStage::run(PipelineState& state) const {
   const float plane_distance = onPlaneDistance(voxel_size_);
   const std::size_t before = state.segments.size();
   const bool check_top = params_.min_top_height > 0.0f && state.prepared.has_table;
-  // Made on the first low segment: most scenes have none.
-  std::optional<TableSightings> table_seen;
+  // Made when first asked: most scenes need neither.
+  std::optional<HeightSightings> table_seen, seen_below;
+  const auto tableSeen = [&]() -> const HeightSightings& {
+    if (!table_seen) {
+      table_seen.emplace(*state.scene->cloud, state.prepared.table_plane, -state.prepared.table_margin,
+                         state.prepared.table_margin, voxel_size_);
+    }
+    return *table_seen;
+  };
   std::size_t thin_kept = 0;
   const auto tableScrap = [&](const CandidateSegment& segment) {
     const float top = topHeight(*state.cloud, segment.points, state.prepared.table_plane);
@@ -157,11 +185,8 @@ void ObjectSizeStage::run(PipelineState& state) const {
     if (state.scene == nullptr || !state.scene->cloud || top < kThinObjectMargins * state.prepared.table_margin) {
       return true;
     }
-    if (!table_seen) {
-      table_seen.emplace(*state.scene->cloud, state.prepared.table_plane, state.prepared.table_margin, voxel_size_);
-    }
     // A footprint with no inner cell hides nothing.
-    if (table_seen->seenShareUnder(*state.cloud, segment.points).value_or(1.0f) >= params_.max_table_seen_share) {
+    if (tableSeen().seenShareUnder(*state.cloud, segment.points).value_or(1.0f) >= params_.max_table_seen_share) {
       return true;
     }
     ++thin_kept;
@@ -175,24 +200,38 @@ void ObjectSizeStage::run(PipelineState& state) const {
                         voxel_size_)) {
       return false;
     }
-    if (!table_seen) {
-      table_seen.emplace(*state.scene->cloud, state.prepared.table_plane, state.prepared.table_margin, voxel_size_);
-    }
     // Under an object seen over another in front of it the table is hidden; under a shelf, seen.
-    const std::optional<float> seen = table_seen->seenShareUnder(*state.cloud, segment.points);
+    const std::optional<float> seen = tableSeen().seenShareUnder(*state.cloud, segment.points);
     const bool result = seen && *seen >= params_.min_table_seen_under_raised;
     hanging += result ? 1 : 0;
+    return result;
+  };
+  // The table hides what is under it: points seen below its level right beside a segment's
+  // footprint are of something passing the table's edge (a chair's back), not standing on it.
+  const bool check_below = params_.min_below_table_share > 0.0f && state.prepared.has_table &&
+                           state.scene != nullptr && state.scene->cloud;
+  std::size_t below_table = 0;
+  const auto passesTableLevel = [&](const CandidateSegment& segment) {
+    if (!seen_below) {
+      seen_below.emplace(*state.scene->cloud, state.prepared.table_plane, -kDeepestBelowTable, -kBelowTableTop,
+                         voxel_size_);
+    }
+    const std::optional<float> share = seen_below->seenShareBeside(*state.cloud, segment.points);
+    const bool result = share && *share >= params_.min_below_table_share;
+    below_table += result ? 1 : 0;
     return result;
   };
   state.segments.erase(std::remove_if(state.segments.begin(), state.segments.end(),
                                       [&](const CandidateSegment& segment) {
                                         if (check_top && tableScrap(segment)) return true;
                                         if (!hasObjectSize(state.cloud, segment.points, state.up, params_, plane_distance)) return true;
+                                        if (check_below && passesTableLevel(segment)) return true;
                                         return check_hanging && hangs(segment);
                                       }),
                        state.segments.end());
   state.count("thin_kept", thin_kept);
   state.count("hanging", hanging);
+  state.count("below_table", below_table);
   state.count("dropped", before - state.segments.size());
 }
 

@@ -398,6 +398,7 @@ struct ObjectSizeParams {
   float min_top_height = 0.015f;
   float max_table_seen_share = 0.5f;
   float min_table_seen_under_raised = 0.5f;
+  float min_below_table_share = 0.5f;
 };
 
 inline void describeParameters(ParameterList<ObjectSizeParams>& list) {
@@ -412,7 +413,9 @@ inline void describeParameters(ParameterList<ObjectSizeParams>& list) {
       .add("max_table_seen_share", &P::max_table_seen_share, 0.0, 1.0, "",
            "...unless the table was seen under less than this share of its footprint's inside: a thin object lying on the table hides it, the table's noise has it all through")
       .add("min_table_seen_under_raised", &P::min_table_seen_under_raised, 0.0, 1.0, "",
-           "a segment resting on nothing (the gap under it taller than itself, nothing under its footprint) with the table seen under this share of its footprint's inside hangs over the table (a shelf): dropped; 0: off");
+           "a segment resting on nothing (the gap under it taller than itself, nothing under its footprint) with the table seen under this share of its footprint's inside hangs over the table (a shelf): dropped; 0: off")
+      .add("min_below_table_share", &P::min_below_table_share, 0.0, 1.0, "",
+           "a segment with points seen 6-50 cm below the table's level within a cell of this share of its footprint's cells passes the table's edge (a chair's back), it does not stand on it: dropped; 0: off");
 }
 
 /// Stage dedup: one segment per object.
