@@ -290,3 +290,42 @@ TEST(ObjectSize, WhatPassesTheTablesEdgeDownwardIsNoObjectWhatStandsAtTheEdgeIs)
   ss::ObjectSizeStage(params, 0.01f).run(state);
   EXPECT_EQ(state.segments.size(), 2u);
 }
+
+TEST(ObjectSize, AFarScrapOfOneCamerasNoiseStandsHigherThanANearOne) {
+  // One camera 1 m over the table, which it sees at a median distance of 1 m. Two patches of
+  // the table's noise 2.5 cm high, the table seen through both: one 1 m from the camera, one
+  // about 2 m (its noise four times the spread): only the far one is a scrap. In a fused cloud
+  // (no table distance) both stay.
+  ss::Scene input;
+  input.cloud = std::make_shared<ss::Cloud>();
+  for (float x = -0.1f; x <= 1.9f; x += 0.005f) {
+    for (float y = -0.1f; y <= 0.1f; y += 0.005f) input.cloud->push_back(at(x, y, 0.002f));
+  }
+  auto working = std::make_shared<ss::Cloud>();
+  const std::vector<int> near = addFlatTop(*working, -0.05f, 0.05f, -0.05f, 0.05f, 0.025f);
+  const std::vector<int> far = addFlatTop(*working, 1.68f, 1.78f, -0.05f, 0.05f, 0.025f);
+  for (const auto& point : *working) input.cloud->push_back(point);
+
+  ss::PipelineState state;
+  state.scene = &input;
+  state.cloud = working;
+  state.prepared.has_table = true;
+  state.prepared.table_plane = ss::PlaneCoefficients(0.0f, 0.0f, 1.0f, 0.0f);
+  state.prepared.table_margin = 0.005f;
+  state.prepared.viewpoint = Eigen::Vector3f(0.0f, 0.0f, 1.0f);
+  state.prepared.table_range = 1.0f;
+  state.up = Eigen::Vector3f::UnitZ();
+  state.segments.resize(2);
+  state.segments[0].points = near;
+  state.segments[1].points = far;
+  const ss::ObjectSizeParams params;
+  ss::ObjectSizeStage(params, 0.01f).run(state);
+  ASSERT_EQ(state.segments.size(), 1u);
+  EXPECT_EQ(state.segments[0].points, near);
+
+  state.prepared.table_range = 0.0f;
+  state.segments.resize(2);
+  state.segments[1].points = far;
+  ss::ObjectSizeStage(params, 0.01f).run(state);
+  EXPECT_EQ(state.segments.size(), 2u);
+}

@@ -127,6 +127,20 @@ TEST(Preprocessing, FindsTableWithRansacAndOrientsEstimatedNormals) {
   }
 }
 
+TEST(Preprocessing, OneCamerasViewKnowsHowFarItSawTheTable) {
+  // One sensor and no normals: a camera's view. The table's median distance from it is where
+  // its noise was measured.
+  const ss::Scene view = tableWithBox(false);
+  std::vector<float> ranges;
+  for (const auto& p : view.cloud->points) {
+    if (std::fabs(p.z) < 0.005f) ranges.push_back((p.getVector3fMap() - view.sensor_origins[0]).norm());
+  }
+  std::nth_element(ranges.begin(), ranges.begin() + ranges.size() / 2, ranges.end());
+  EXPECT_NEAR(ss::preprocess(view, ss::PreprocessParams{}).table_range, ranges[ranges.size() / 2], 0.01f);
+  // A cloud with normals and no pixel grid is fused from several views: no one distance.
+  EXPECT_EQ(ss::preprocess(tableWithBox(true), ss::PreprocessParams{}).table_range, 0.0f);
+}
+
 TEST(Preprocessing, ExpandToInputGivesSortedUniqueIndices) {
   const ss::Scene scene = tableWithBox(true);
   const auto prepared = ss::preprocess(scene, ss::PreprocessParams{});

@@ -225,6 +225,22 @@ float localTableNoise(const Cloud& input, const std::vector<int>& finite, const 
   return 1.4826f * quantileOf(residuals, 0.5f);
 }
 
+// One origin alone does not make a single view (a fused cloud may name its last camera): a
+// camera's frame keeps its pixel grid or comes without normals.
+bool oneCamera(const Scene& scene) {
+  return scene.sensor_origins.size() == 1 && (scene.cloud->isOrganized() || !scene.has_normals);
+}
+
+// The median distance from `viewpoint` of the points within `band` of the table; 0 without any.
+float medianTableRange(const Cloud& input, const std::vector<int>& finite, const std::vector<float>& distances,
+                       const Eigen::Vector3f& viewpoint, float band) {
+  std::vector<float> ranges;
+  for (std::size_t k = 0; k < finite.size(); ++k) {
+    if (std::fabs(distances[k]) < band) ranges.push_back((input.points[finite[k]].getVector3fMap() - viewpoint).norm());
+  }
+  return ranges.empty() ? 0.0f : quantileOf(ranges, 0.5f);
+}
+
 float marginFor(const std::optional<TableSpread>& spread, const PreprocessParams& params) {
   if (!spread) return params.table_margin;  // too few table points to tell
   // Not std::clamp: a configured margin under kMinTableMargin is the cap, as documented.
@@ -293,11 +309,7 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
       // The sensor is known from the scene's origins or the cloud's own viewpoint (a PCD's VIEWPOINT).
       std::optional<Eigen::Vector3f> sensor;
       if (!scene.sensor_origins.empty()) sensor = out.viewpoint;
-      // One origin alone does not make a single view (a fused cloud may name its last camera):
-      // a camera's frame keeps its pixel grid or comes without normals.
-      const bool single_view =
-          scene.sensor_origins.size() == 1 && (scene.cloud->isOrganized() || !scene.has_normals);
-      found = estimateSupportingPlane(*coarse, params, sensor, plane, single_view, scene.up);
+      found = estimateSupportingPlane(*coarse, params, sensor, plane, oneCamera(scene), scene.up);
     }
     if (found) {
       out.has_table = true;
@@ -310,6 +322,7 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
       out.table_noise =
           localTableNoise(input, finite, distances, out.table_plane, params.ransac_distance, scene.has_normals);
       out.table_margin = params.adaptive_table_margin ? marginFor(spread, params) : params.table_margin;
+      out.table_range = oneCamera(scene) ? medianTableRange(input, finite, distances, out.viewpoint, params.ransac_distance) : 0.0f;
       const float max_height = params.max_object_height > 0.0f ? params.max_object_height
                                                                 : std::numeric_limits<float>::infinity();
       // The table's extent: only what stands over it goes on (walls, floor, background do not).

@@ -51,6 +51,17 @@ Eigen::Matrix<float, Dims, 1> principalExtents(const std::vector<Eigen::Matrix<f
   return extents;
 }
 
+/// How much more a camera's depth noise spreads at `points` than at the table's median distance
+/// (the square of the distances' ratio, at least 1); 1 but for one camera's view.
+float noiseGrowth(const Cloud& cloud, const std::vector<int>& points, const PreprocessedScene& prepared) {
+  if (!(prepared.table_range > 0.0f) || points.empty()) return 1.0f;
+  std::vector<float> ranges;
+  ranges.reserve(points.size());
+  for (int i : points) ranges.push_back((cloud[i].getVector3fMap() - prepared.viewpoint).norm());
+  const float ratio = quantileOf(ranges, 0.5f) / prepared.table_range;
+  return std::isfinite(ratio) ? std::max(1.0f, ratio * ratio) : 1.0f;
+}
+
 }  // namespace
 
 Eigen::Vector3f segmentExtents(const Cloud& cloud, const std::vector<int>& points, const std::optional<Eigen::Vector3f>& up) {
@@ -178,7 +189,7 @@ void ObjectSizeStage::run(PipelineState& state) const {
   std::size_t thin_kept = 0;
   const auto tableScrap = [&](const CandidateSegment& segment) {
     const float top = topHeight(*state.cloud, segment.points, state.prepared.table_plane);
-    if (top >= params_.min_top_height) return false;
+    if (top >= params_.min_top_height * noiseGrowth(*state.cloud, segment.points, state.prepared)) return false;
     // Without the input cloud nothing tells a scrap from a thin object: the height decides. So
     // it does for a top under two margins (6 sigma of the table's noise): the table's own
     // surface raised by a few millimetres (a cloth, a warp) hides "the table" too.
