@@ -68,8 +68,9 @@ struct PreprocessedScene {
   float table_margin = 0.0f;               ///< The margin actually used (m).
   float table_noise = 0.0f;                ///< The sensor's noise (m): robust sigma of the table's points about
                                            ///< their 2 cm cell's median height; 0: unknown.
-  /// One camera's view: the median distance of the table's points from it (m), where its depth
-  /// noise is table_noise (a camera's grows with the square of the distance); 0 otherwise.
+  /// One camera's view from over the table (20 cm or more): the median distance of the table's
+  /// points from it (m), where its depth noise is table_noise (a camera's grows with the square
+  /// of the distance); 0 otherwise.
   float table_range = 0.0f;
   PlaneCoefficients table_plane = PlaneCoefficients::Zero();  ///< Normal points away from the table top.
   std::optional<SupportPolygon> support_polygon;  ///< The table's extent, when cropped to it.

@@ -72,6 +72,8 @@ constexpr float kTableFacingCos = 0.8f;  // within ~37 deg of the table's normal
 constexpr std::size_t kMinNoiseCellPoints = 5;
 constexpr std::size_t kMinNoiseSamples = 100;
 constexpr std::size_t kNoiseSamplePoints = 40000;
+// A camera this high over the table looks at it; an origin lower (or under it) is no camera's.
+constexpr float kMinCameraHeight = 0.2f;
 
 bool isFinitePoint(const PointT& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
@@ -322,7 +324,11 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
       out.table_noise =
           localTableNoise(input, finite, distances, out.table_plane, params.ransac_distance, scene.has_normals);
       out.table_margin = params.adaptive_table_margin ? marginFor(spread, params) : params.table_margin;
-      out.table_range = oneCamera(scene) ? medianTableRange(input, finite, distances, out.viewpoint, params.ransac_distance) : 0.0f;
+      // Only a camera over the table: a cloud saved in a world frame may name an origin elsewhere.
+      const bool camera_over_table =
+          oneCamera(scene) && out.table_plane.head<3>().dot(out.viewpoint) + out.table_plane[3] > kMinCameraHeight;
+      out.table_range =
+          camera_over_table ? medianTableRange(input, finite, distances, out.viewpoint, params.ransac_distance) : 0.0f;
       const float max_height = params.max_object_height > 0.0f ? params.max_object_height
                                                                 : std::numeric_limits<float>::infinity();
       // The table's extent: only what stands over it goes on (walls, floor, background do not).

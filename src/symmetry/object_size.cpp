@@ -13,6 +13,7 @@
 #include <pcl/sample_consensus/model_types.h>
 #include <pcl/segmentation/sac_segmentation.h>
 
+#include "symmetry_segmentation/point_validity.h"
 #include "symmetry_segmentation/quantile.h"
 #include "symmetry_segmentation/symmetry/hanging_segments.h"
 #include "symmetry_segmentation/symmetry/pipeline_state.h"
@@ -23,9 +24,9 @@ namespace {
 constexpr int kPlaneIterations = 200;
 // A thin object's top stands this many table margins over the table (see ObjectSizeStage::run).
 constexpr float kThinObjectMargins = 2.0f;
-// Below the table's level: deeper than a table top is thick, higher than a chair's seat sits
-// under it (the floor under an object at the edge says nothing of it).
-constexpr float kBelowTableTop = 0.06f;
+// A scrap's height grows with the camera's noise by at most this (4: at twice the table's
+// distance); beyond, a frame's far end is better cut by preprocessing.max_range.
+constexpr float kMaxNoiseGrowth = 4.0f;
 constexpr float kDeepestBelowTable = 0.5f;
 // Share of the points left out at either end of an extent.
 constexpr float kTrim = 0.05f;
@@ -59,7 +60,7 @@ float noiseGrowth(const Cloud& cloud, const std::vector<int>& points, const Prep
   ranges.reserve(points.size());
   for (int i : points) ranges.push_back((cloud[i].getVector3fMap() - prepared.viewpoint).norm());
   const float ratio = quantileOf(ranges, 0.5f) / prepared.table_range;
-  return std::isfinite(ratio) ? std::max(1.0f, ratio * ratio) : 1.0f;
+  return std::isfinite(ratio) ? std::clamp(ratio * ratio, 1.0f, kMaxNoiseGrowth) : 1.0f;
 }
 
 }  // namespace
@@ -121,26 +122,11 @@ HeightSightings::HeightSightings(const Cloud& input, const PlaneCoefficients& ta
                                  float cell)
     : grid_(table_plane, cell) {
   for (const PointT& point : input) {
+    if (!isUsablePoint(point)) continue;
     const Eigen::Vector3f p = point.getVector3fMap();
     const float height = grid_.height(p);
-    if (std::isfinite(height) && height >= low && height <= high) seen_.insert(TableGrid::key(grid_.cellOf(p)));
+    if (height >= low && height <= high) seen_.insert(TableGrid::key(grid_.cellOf(p)));
   }
-}
-
-std::optional<float> HeightSightings::seenShareBeside(const Cloud& cloud, const std::vector<int>& points) const {
-  std::unordered_set<std::int64_t> footprint;
-  std::size_t seen = 0;
-  for (int i : points) {
-    const auto [x, y] = grid_.cellOf(cloud[i].getVector3fMap());
-    if (!footprint.insert(TableGrid::key(x, y)).second) continue;
-    bool near = false;
-    for (std::int64_t dx = -1; dx <= 1 && !near; ++dx) {
-      for (std::int64_t dy = -1; dy <= 1 && !near; ++dy) near = seen_.count(TableGrid::key(x + dx, y + dy)) > 0;
-    }
-    seen += near ? 1 : 0;
-  }
-  if (footprint.empty()) return std::nullopt;
-  return static_cast<float>(seen) / static_cast<float>(footprint.size());
 }
 
 std::optional<float> HeightSightings::seenShareUnder(const Cloud& cloud, const std::vector<int>& points) const {
@@ -177,8 +163,8 @@ void ObjectSizeStage::run(PipelineState& state) const {
   const float plane_distance = onPlaneDistance(voxel_size_);
   const std::size_t before = state.segments.size();
   const bool check_top = params_.min_top_height > 0.0f && state.prepared.has_table;
-  // Made when first asked: most scenes need neither.
-  std::optional<HeightSightings> table_seen, seen_below;
+  // Made when first asked.
+  std::optional<HeightSightings> table_seen;
   const auto tableSeen = [&]() -> const HeightSightings& {
     if (!table_seen) {
       table_seen.emplace(*state.scene->cloud, state.prepared.table_plane, -state.prepared.table_margin,
@@ -217,32 +203,15 @@ void ObjectSizeStage::run(PipelineState& state) const {
     hanging += result ? 1 : 0;
     return result;
   };
-  // The table hides what is under it: points seen below its level right beside a segment's
-  // footprint are of something passing the table's edge (a chair's back), not standing on it.
-  const bool check_below = params_.min_below_table_share > 0.0f && state.prepared.has_table &&
-                           state.scene != nullptr && state.scene->cloud;
-  std::size_t below_table = 0;
-  const auto passesTableLevel = [&](const CandidateSegment& segment) {
-    if (!seen_below) {
-      seen_below.emplace(*state.scene->cloud, state.prepared.table_plane, -kDeepestBelowTable, -kBelowTableTop,
-                         voxel_size_);
-    }
-    const std::optional<float> share = seen_below->seenShareBeside(*state.cloud, segment.points);
-    const bool result = share && *share >= params_.min_below_table_share;
-    below_table += result ? 1 : 0;
-    return result;
-  };
   state.segments.erase(std::remove_if(state.segments.begin(), state.segments.end(),
                                       [&](const CandidateSegment& segment) {
                                         if (check_top && tableScrap(segment)) return true;
                                         if (!hasObjectSize(state.cloud, segment.points, state.up, params_, plane_distance)) return true;
-                                        if (check_below && passesTableLevel(segment)) return true;
                                         return check_hanging && hangs(segment);
                                       }),
                        state.segments.end());
   state.count("thin_kept", thin_kept);
   state.count("hanging", hanging);
-  state.count("below_table", below_table);
   state.count("dropped", before - state.segments.size());
 }
 

@@ -36,9 +36,6 @@ class HeightSightings {
   /// The share of the inner cells of the footprint of `points` (cells whose 8 neighbours hold
   /// points too) with a sighting; none when the footprint has no inner cell.
   std::optional<float> seenShareUnder(const Cloud& cloud, const std::vector<int>& points) const;
-  /// The share of the cells of the footprint of `points` with a sighting in them or in one of
-  /// their 8 neighbours; none when `points` is empty.
-  std::optional<float> seenShareBeside(const Cloud& cloud, const std::vector<int>& points) const;
 
  private:
   TableGrid grid_;

@@ -398,7 +398,6 @@ struct ObjectSizeParams {
   float min_top_height = 0.015f;
   float max_table_seen_share = 0.5f;
   float min_table_seen_under_raised = 0.5f;
-  float min_below_table_share = 0.5f;
 };
 
 inline void describeParameters(ParameterList<ObjectSizeParams>& list) {
@@ -409,13 +408,11 @@ inline void describeParameters(ParameterList<ObjectSizeParams>& list) {
            "a segment mostly on one plane wider than this is a wall or table, not an object; 0: no limit")
       .add("min_plane_share", &P::min_plane_share, 0.0, 1.0, "", "mostly on one plane: this share of its points")
       .add("min_top_height", &P::min_top_height, 0.0, 1.0, "m",
-           "a segment whose top (95th percentile) is lower over the table is a scrap of the table's noise (in one camera's view times the square of its distance over the table's median distance, at least 1); 0: off")
+           "a segment whose top (95th percentile) is lower over the table is a scrap of the table's noise (in one camera's view times the square of its median distance over the table's, 1 to 4); 0: off")
       .add("max_table_seen_share", &P::max_table_seen_share, 0.0, 1.0, "",
            "...unless the table was seen under less than this share of its footprint's inside: a thin object lying on the table hides it, the table's noise has it all through")
       .add("min_table_seen_under_raised", &P::min_table_seen_under_raised, 0.0, 1.0, "",
-           "a segment resting on nothing (the gap under it taller than itself, nothing under its footprint) with the table seen under this share of its footprint's inside hangs over the table (a shelf): dropped; 0: off")
-      .add("min_below_table_share", &P::min_below_table_share, 0.0, 1.0, "",
-           "a segment with points seen 6-50 cm below the table's level within a cell of this share of its footprint's cells passes the table's edge (a chair's back), it does not stand on it: dropped; 0: off");
+           "a segment resting on nothing (the gap under it taller than itself, nothing under its footprint) with the table seen under this share of its footprint's inside hangs over the table (a shelf): dropped; 0: off");
 }
 
 /// Stage dedup: one segment per object.
