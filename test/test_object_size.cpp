@@ -25,6 +25,23 @@ ss::PointT at(float x, float y, float z) {
   return p;
 }
 
+/// What object_size works on: `working` over `table` (its margin `margin`), the input scene
+/// `input` (may be null), and the segments `first` and `second`.
+ss::PipelineState overTheTable(const ss::Scene* input, const ss::Cloud::Ptr& working, const ss::PlaneCoefficients& table,
+                               float margin, const std::vector<int>& first, const std::vector<int>& second) {
+  ss::PipelineState state;
+  state.scene = input;
+  state.cloud = working;
+  state.prepared.has_table = true;
+  state.prepared.table_plane = table;
+  state.prepared.table_margin = margin;
+  state.up = Eigen::Vector3f::UnitZ();
+  state.segments.resize(2);
+  state.segments[0].points = first;
+  state.segments[1].points = second;
+  return state;
+}
+
 }  // namespace
 
 TEST(ObjectSize, ExtentsFollowTheTableAndIgnoreStrayPoints) {
@@ -89,14 +106,7 @@ TEST(ObjectSize, ScrapsOfTheTablesNoiseAreNoObjectsThinLyingOnesAre) {
   EXPECT_NEAR(ss::topHeight(*scene, book, table), 0.025f, 0.003f);
 
   // The stage drops the scrap and keeps the book; with no table it cannot tell and keeps both.
-  ss::PipelineState state;
-  state.cloud = scene;
-  state.prepared.has_table = true;
-  state.prepared.table_plane = table;
-  state.up = Eigen::Vector3f::UnitZ();
-  state.segments.resize(2);
-  state.segments[0].points = scrap;
-  state.segments[1].points = book;
+  ss::PipelineState state = overTheTable(nullptr, scene, table, 0.0f, scrap, book);
   ss::ObjectSizeParams params;
   ASSERT_FLOAT_EQ(params.min_top_height, 0.015f);
   ss::ObjectSizeStage(params, 0.01f).run(state);
@@ -151,23 +161,14 @@ TEST(ObjectSize, AThinObjectHidesTheTableUnderItTheTablesNoiseDoesNot) {
   for (int i : scrap) input.cloud->push_back((*working)[i]);
 
   const ss::PlaneCoefficients table(0.0f, 0.0f, 1.0f, 0.0f);
-  const ss::HeightSightings sightings(*input.cloud, table, -0.005f, 0.005f, 0.01f);
+  const ss::TableSightings sightings(*input.cloud, table, 0.005f, 0.01f);
   EXPECT_LT(sightings.seenShareUnder(*working, board).value_or(1.0f), 0.1f);
   EXPECT_GT(sightings.seenShareUnder(*working, scrap).value_or(0.0f), 0.9f);
   // Scattered points (no inner cell of their footprint) tell nothing.
   const std::vector<int> scattered = {board[0], board[40], scrap[0]};
   EXPECT_FALSE(sightings.seenShareUnder(*working, scattered).has_value());
 
-  ss::PipelineState state;
-  state.scene = &input;
-  state.cloud = working;
-  state.prepared.has_table = true;
-  state.prepared.table_plane = table;
-  state.prepared.table_margin = 0.005f;
-  state.up = Eigen::Vector3f::UnitZ();
-  state.segments.resize(2);
-  state.segments[0].points = scrap;
-  state.segments[1].points = board;
+  ss::PipelineState state = overTheTable(&input, working, table, 0.005f, scrap, board);
   ss::ObjectSizeParams params;
   ASSERT_LT(0.012f, params.min_top_height);
   ss::ObjectSizeStage(params, 0.01f).run(state);
@@ -210,16 +211,8 @@ TEST(ObjectSize, AShelfOverTheTableIsNoObjectWhatIsSeenOverAnOccluderIs) {
   }
   for (const auto& point : *working) input.cloud->push_back(point);
 
-  ss::PipelineState state;
-  state.scene = &input;
-  state.cloud = working;
-  state.prepared.has_table = true;
-  state.prepared.table_plane = ss::PlaneCoefficients(0.0f, 0.0f, 1.0f, 0.0f);
-  state.prepared.table_margin = 0.005f;
-  state.up = Eigen::Vector3f::UnitZ();
-  state.segments.resize(2);
-  state.segments[0].points = shelf;
-  state.segments[1].points = behind;
+  ss::PipelineState state =
+      overTheTable(&input, working, ss::PlaneCoefficients(0.0f, 0.0f, 1.0f, 0.0f), 0.005f, shelf, behind);
   ss::ObjectSizeParams params;
   ASSERT_GT(params.min_table_seen_under_raised, 0.0f);
   ss::ObjectSizeStage(params, 0.01f).run(state);
@@ -252,18 +245,10 @@ TEST(ObjectSize, AFarScrapOfOneCamerasNoiseStandsHigherThanANearOne) {
   const std::vector<int> far = addFlatTop(*working, 1.68f, 1.78f, -0.05f, 0.05f, 0.032f);
   for (const auto& point : *working) input.cloud->push_back(point);
 
-  ss::PipelineState state;
-  state.scene = &input;
-  state.cloud = working;
-  state.prepared.has_table = true;
-  state.prepared.table_plane = ss::PlaneCoefficients(0.0f, 0.0f, 1.0f, 0.0f);
-  state.prepared.table_margin = 0.005f;
+  ss::PipelineState state =
+      overTheTable(&input, working, ss::PlaneCoefficients(0.0f, 0.0f, 1.0f, 0.0f), 0.005f, near, far);
   state.prepared.viewpoint = Eigen::Vector3f(0.0f, 0.0f, 1.0f);
   state.prepared.table_range = 1.0f;
-  state.up = Eigen::Vector3f::UnitZ();
-  state.segments.resize(2);
-  state.segments[0].points = near;
-  state.segments[1].points = far;
   const ss::ObjectSizeParams params;
   ss::ObjectSizeStage(params, 0.01f).run(state);
   ASSERT_EQ(state.segments.size(), 1u);

@@ -24,7 +24,6 @@ class TableGrid {
         e2_(up_.cross(e1_)),
         cell_(cell) {}
 
-  const Eigen::Vector3f& up() const { return up_; }
   /// Signed height over the table (m).
   float height(const Eigen::Vector3f& p) const { return up_.dot(p) + offset_; }
   Cell cellOf(const Eigen::Vector3f& p) const {

@@ -27,7 +27,6 @@ constexpr float kThinObjectMargins = 2.0f;
 // A scrap's height grows with the camera's noise by at most this (4: at twice the table's
 // distance); beyond, a frame's far end is better cut by preprocessing.max_range.
 constexpr float kMaxNoiseGrowth = 4.0f;
-constexpr float kDeepestBelowTable = 0.5f;
 // Share of the points left out at either end of an extent.
 constexpr float kTrim = 0.05f;
 
@@ -118,18 +117,17 @@ std::vector<int> largestPlanePoints(const Cloud::ConstPtr& cloud, const std::vec
   return std::vector<int>(inliers.indices.begin(), inliers.indices.end());
 }
 
-HeightSightings::HeightSightings(const Cloud& input, const PlaneCoefficients& table_plane, float low, float high,
-                                 float cell)
+TableSightings::TableSightings(const Cloud& input, const PlaneCoefficients& table_plane, float band, float cell)
     : grid_(table_plane, cell) {
   for (const PointT& point : input) {
     if (!isUsablePoint(point)) continue;
     const Eigen::Vector3f p = point.getVector3fMap();
     const float height = grid_.height(p);
-    if (height >= low && height <= high) seen_.insert(TableGrid::key(grid_.cellOf(p)));
+    if (std::abs(height) <= band) seen_.insert(TableGrid::key(grid_.cellOf(p)));
   }
 }
 
-std::optional<float> HeightSightings::seenShareUnder(const Cloud& cloud, const std::vector<int>& points) const {
+std::optional<float> TableSightings::seenShareUnder(const Cloud& cloud, const std::vector<int>& points) const {
   std::unordered_set<std::int64_t> footprint;
   std::vector<TableGrid::Cell> cells;
   for (int i : points) {
@@ -164,12 +162,9 @@ void ObjectSizeStage::run(PipelineState& state) const {
   const std::size_t before = state.segments.size();
   const bool check_top = params_.min_top_height > 0.0f && state.prepared.has_table;
   // Made when first asked.
-  std::optional<HeightSightings> table_seen;
-  const auto tableSeen = [&]() -> const HeightSightings& {
-    if (!table_seen) {
-      table_seen.emplace(*state.scene->cloud, state.prepared.table_plane, -state.prepared.table_margin,
-                         state.prepared.table_margin, voxel_size_);
-    }
+  std::optional<TableSightings> table_seen;
+  const auto tableSeen = [&]() -> const TableSightings& {
+    if (!table_seen) table_seen.emplace(*state.scene->cloud, state.prepared.table_plane, state.prepared.table_margin, voxel_size_);
     return *table_seen;
   };
   std::size_t thin_kept = 0;

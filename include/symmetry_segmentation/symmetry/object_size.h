@@ -27,14 +27,13 @@ namespace symmetry_segmentation {
 /// Height over `table_plane` of the top of `points` (95th percentile of their heights; 0 when empty).
 float topHeight(const Cloud& cloud, const std::vector<int>& points, const PlaneCoefficients& table_plane);
 
-/// Where the input cloud was seen at heights in [low, high] over the table: the cells (side
-/// `cell`, on a grid in the table's plane) holding such points. With [-band, band]: where the
-/// table itself was seen.
-class HeightSightings {
+/// Where the table itself was seen: the cells (side `cell`, on a grid in the table's plane) over
+/// which the input cloud has points within `band` of the plane (either side).
+class TableSightings {
  public:
-  HeightSightings(const Cloud& input, const PlaneCoefficients& table_plane, float low, float high, float cell);
+  TableSightings(const Cloud& input, const PlaneCoefficients& table_plane, float band, float cell);
   /// The share of the inner cells of the footprint of `points` (cells whose 8 neighbours hold
-  /// points too) with a sighting; none when the footprint has no inner cell.
+  /// points too) in which the table was seen; none when the footprint has no inner cell.
   std::optional<float> seenShareUnder(const Cloud& cloud, const std::vector<int>& points) const;
 
  private:
