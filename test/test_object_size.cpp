@@ -6,7 +6,9 @@
 #include <string>
 
 #include "symmetry_segmentation/symmetry/object_size.h"
+#include "symmetry_segmentation/occupancy.h"
 #include "symmetry_segmentation/symmetry/pipeline_state.h"
+#include "symmetry_segmentation/symmetry/symmetric_graph_cut.h"
 #include "test_clouds.h"
 
 namespace ss = symmetry_segmentation;
@@ -259,4 +261,44 @@ TEST(ObjectSize, AFarScrapOfOneCamerasNoiseStandsHigherThanANearOne) {
   state.segments[1].points = far;
   ss::ObjectSizeStage(params, 0.01f).run(state);
   EXPECT_EQ(state.segments.size(), 2u);
+}
+
+TEST(ObjectSize, TheTablesSpecksLeaveASegmentOneMadeOfThemGoes) {
+  // A 10 cm box, and a chain of the table's specks (1.2 cm over it, 2 cm apart) from 4 cm off
+  // its side: the cut's neighbour graph (links up to 5 cm) carries them into the box's segment.
+  // A second segment is specks but for three points 5 cm up: mostly specks, it goes whole.
+  auto working = std::make_shared<ss::Cloud>();
+  test_clouds::addBox(*working, {0.0f, 0.0f, -0.005f}, {0.1f, 0.1f, 0.105f}, 0.01f);
+  const std::vector<int> box = allOf(*working);
+  std::vector<int> box_and_specks = box;
+  for (float x = 0.14f; x < 0.5f; x += 0.02f) {
+    box_and_specks.push_back(static_cast<int>(working->size()));
+    working->push_back(at(x, 0.05f, 0.012f));
+  }
+  std::vector<int> specks_and_a_scrap;
+  for (float y = 0.2f; y < 0.6f; y += 0.02f) {
+    specks_and_a_scrap.push_back(static_cast<int>(working->size()));
+    working->push_back(at(-0.3f, y, 0.012f));
+  }
+  for (float y = 0.2f; y < 0.23f; y += 0.01f) {
+    specks_and_a_scrap.push_back(static_cast<int>(working->size()));
+    working->push_back(at(-0.32f, y, 0.05f));
+  }
+  ss::Cloud with_table = *working;
+  test_clouds::addTable(with_table, 0.9f, 0.01f);
+  const ss::PlaneCoefficients table(0.0f, 0.0f, 1.0f, 0.0f);
+  const ss::OccupancyMap occupancy =
+      ss::OccupancyMap::fromRayCasting(with_table, {Eigen::Vector3f(0.0f, -0.8f, 0.8f)});
+
+  ss::PipelineState state = overTheTable(nullptr, working, table, 0.005f, box_and_specks, specks_and_a_scrap);
+  const ss::ObjectSizeParams params;
+  // Without the cut's graph nothing tells pieces apart: both stay as they are.
+  ss::ObjectSizeStage(params, 0.01f).run(state);
+  ASSERT_EQ(state.segments.size(), 2u);
+  EXPECT_EQ(state.segments[0].points, box_and_specks);
+
+  state.graph = std::make_unique<ss::SymmetricGraphCut>(working, occupancy, table, ss::SymmetryCutParams{});
+  ss::ObjectSizeStage(params, 0.01f).run(state);
+  ASSERT_EQ(state.segments.size(), 1u);
+  EXPECT_EQ(state.segments[0].points, box);
 }

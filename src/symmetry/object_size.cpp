@@ -17,6 +17,8 @@
 #include "symmetry_segmentation/quantile.h"
 #include "symmetry_segmentation/symmetry/hanging_segments.h"
 #include "symmetry_segmentation/symmetry/pipeline_state.h"
+#include "symmetry_segmentation/symmetry/symmetric_graph_cut.h"
+#include "symmetry_segmentation/symmetry/table_specks.h"
 
 namespace symmetry_segmentation {
 namespace {
@@ -27,6 +29,9 @@ constexpr float kThinObjectMargins = 2.0f;
 // A scrap's height grows with the camera's noise by at most this (4: at twice the table's
 // distance); beyond, a frame's far end is better cut by preprocessing.max_range.
 constexpr float kMaxNoiseGrowth = 4.0f;
+// Points of a segment this many voxels apart are one piece of it; farther, a low piece is a
+// speck of the table's noise (table_specks.h). Above the 1.73 voxels of a voxel's diagonal.
+constexpr float kPieceLinkVoxels = 2.5f;
 // Share of the points left out at either end of an extent.
 constexpr float kTrim = 0.05f;
 
@@ -184,6 +189,20 @@ void ObjectSizeStage::run(PipelineState& state) const {
     ++thin_kept;
     return false;
   };
+  // The table's specks go before any test: they neither make a segment large nor its top high.
+  std::size_t specks = 0;
+  if (check_top && state.graph) {
+    for (CandidateSegment& segment : state.segments) {
+      const float scrap_height = params_.min_top_height * noiseGrowth(*state.cloud, segment.points, state.prepared);
+      std::vector<int> kept = withoutTableSpecks(*state.cloud, state.graph->neighbours(), segment.points,
+                                                 state.prepared.table_plane, kPieceLinkVoxels * voxel_size_,
+                                                 scrap_height);
+      specks += segment.points.size() - kept.size();
+      // Mostly specks, the segment was the table's noise with a scrap of something on it.
+      if (2 * kept.size() < segment.points.size()) kept.clear();
+      segment.points = std::move(kept);
+    }
+  }
   const bool check_hanging = params_.min_table_seen_under_raised > 0.0f && state.prepared.has_table &&
                              state.scene != nullptr && state.scene->cloud;
   std::size_t hanging = 0;
@@ -200,11 +219,13 @@ void ObjectSizeStage::run(PipelineState& state) const {
   };
   state.segments.erase(std::remove_if(state.segments.begin(), state.segments.end(),
                                       [&](const CandidateSegment& segment) {
+                                        if (segment.points.empty()) return true;
                                         if (check_top && tableScrap(segment)) return true;
                                         if (!hasObjectSize(state.cloud, segment.points, state.up, params_, plane_distance)) return true;
                                         return check_hanging && hangs(segment);
                                       }),
                        state.segments.end());
+  state.count("speck_points", specks);
   state.count("thin_kept", thin_kept);
   state.count("hanging", hanging);
   state.count("dropped", before - state.segments.size());

@@ -6,8 +6,10 @@
 // than max_plane_extent, is dropped; so is one whose top is less than min_top_height over the
 // table (a scrap of the table's own depth noise, which a far single view leaves above the margin),
 // unless it hides the table: under a book or a board lying flat no view sees the table, while
-// the noise's scrap has the table seen all through it. Extents leave out 5 % of the points at
-// either end: a few stray points of a neighbour do not make an object large.
+// the noise's scrap has the table seen all through it. Before any test, a segment's specks of
+// that noise go (table_specks.h): pieces of it as low as a scrap, apart from the rest. Extents
+// leave out 5 % of the points at either end: a few stray points of a neighbour do not make an
+// object large.
 
 #include <cstdint>
 #include <optional>
