@@ -386,3 +386,29 @@ TEST(Completion, ASideThatStopsOnSomethingSeenOrOnAnotherObjectIsNotCarriedDown)
   }
   EXPECT_TRUE(ss::groundedSidePoints(lid, allOf(lid), table, 0.01f, everywhere).empty());
 }
+
+TEST(Completion, ABoxRestingOnTheTableReachesDownToItOneStackedHigherDoesNot) {
+  // The table z = 0 (written with a scaled normal: distances are normalised); boxes with z up.
+  const ss::PlaneCoefficients table(0.0f, 0.0f, 2.0f, 0.0f);
+  ss::ObjectBox cut_at_the_margin;  // the table's 1.2 cm cut took its foot
+  cut_at_the_margin.center = Eigen::Vector3f(0.1f, 0.2f, 0.062f);
+  cut_at_the_margin.size = Eigen::Vector3f(0.1f, 0.05f, 0.1f);
+  const ss::ObjectBox resting = ss::restingBox(cut_at_the_margin, table, 0.02f);
+  EXPECT_NEAR(resting.center.z() - 0.5f * resting.size.z(), 0.0f, 1e-5f);
+  EXPECT_NEAR(resting.center.z() + 0.5f * resting.size.z(), 0.112f, 1e-5f) << "its top stays";
+  EXPECT_FLOAT_EQ(resting.size.x(), 0.1f);
+  EXPECT_FLOAT_EQ(resting.center.x(), 0.1f);
+
+  // Its bottom 3 cm up: it stands on something else (a box on a box), the box stays.
+  ss::ObjectBox stacked = cut_at_the_margin;
+  stacked.center.z() = 0.08f;
+  EXPECT_FLOAT_EQ(ss::restingBox(stacked, table, 0.02f).size.z(), 0.1f);
+  // Already down at the table, or under it by noise: unchanged.
+  ss::ObjectBox down = cut_at_the_margin;
+  down.center.z() = 0.049f;
+  EXPECT_FLOAT_EQ(ss::restingBox(down, table, 0.02f).center.z(), 0.049f);
+  // A box not along the table's up (a principal box) stays as it is.
+  ss::ObjectBox tilted = cut_at_the_margin;
+  tilted.axes = Eigen::AngleAxisf(0.5f, Eigen::Vector3f::UnitX()).toRotationMatrix();
+  EXPECT_FLOAT_EQ(ss::restingBox(tilted, table, 0.02f).size.z(), 0.1f);
+}

@@ -38,6 +38,8 @@ constexpr float kMaxRoundDeviation = 0.1f;    // of the slice's median radius, r
 // box's axis, and at least this many of them.
 constexpr float kMaxHiddenSideGap = 0.03f;  // m
 constexpr std::size_t kMinHiddenSidePoints = 3;
+// A box turned further than ~8 deg off the support's up does not stand on it with its bottom.
+constexpr float kUprightBoxCos = 0.99f;
 // A column's lowest point is on a side (not a top or bottom face) when its normal is within 45 deg
 // of horizontal; a column reaching within 1.5 cells of the support is grounded (the support's
 // own points are observed there).
@@ -322,6 +324,21 @@ ObjectBox groundedBox(ObjectBox box, const std::vector<Eigen::Vector3f>& grounde
   const float top = bottom + box.size.z();
   box.center += 0.5f * (lowest - bottom) * z;
   box.size.z() = top - lowest;
+  return box;
+}
+
+ObjectBox restingBox(ObjectBox box, const PlaneCoefficients& support, float reach) {
+  const float norm = support.head<3>().norm();
+  if (!(norm > 0.0f)) return box;
+  const Eigen::Vector3f z = box.axes.col(2);
+  const Eigen::Vector3f bottom_centre = box.center - 0.5f * box.size.z() * z;
+  const float cos_up = support.head<3>().dot(z) / norm;
+  if (cos_up < kUprightBoxCos) return box;  // a box not along the support's up
+  // How far down along z the support is from the bottom's centre.
+  const float gap = (support.head<3>().dot(bottom_centre) + support[3]) / norm / cos_up;
+  if (!(gap > 0.0f && gap < reach)) return box;
+  box.center -= 0.5f * gap * z;
+  box.size.z() += gap;
   return box;
 }
 

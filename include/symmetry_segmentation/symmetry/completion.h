@@ -110,6 +110,13 @@ std::vector<Eigen::Vector3f> groundedSidePoints(const Cloud& cloud, const std::v
 /// `grounded` (groundedSidePoints) where that is lower: the box's other sides stay.
 ObjectBox groundedBox(ObjectBox box, const std::vector<Eigen::Vector3f>& grounded);
 
+/// `box` (its z along the support's up) of an object resting on the `support` (oriented up):
+/// when its bottom is over the support by less than `reach`, it reaches down to the support.
+/// The table's cut takes an object's lowest centimetre or so with the table, and an object
+/// standing there goes on down to it (a stacked one stands higher, a ball's hidden underside
+/// stays hidden).
+ObjectBox restingBox(ObjectBox box, const PlaneCoefficients& support, float reach);
+
 /// The first of `points` in each `cell`-sized cube, in order.
 std::vector<Eigen::Vector3f> onePerCell(const std::vector<Eigen::Vector3f>& points, float cell);
 
