@@ -7,6 +7,7 @@
 #include "fake_evidence.h"
 #include "symmetry_segmentation/symmetry/completion.h"
 #include "symmetry_segmentation/symmetry/symmetry_plane.h"
+#include "test_clouds.h"
 
 namespace ss = symmetry_segmentation;
 
@@ -407,8 +408,43 @@ TEST(Completion, ABoxRestingOnTheTableReachesDownToItOneStackedHigherDoesNot) {
   ss::ObjectBox down = cut_at_the_margin;
   down.center.z() = 0.049f;
   EXPECT_FLOAT_EQ(ss::restingBox(down, table, 0.02f).center.z(), 0.049f);
-  // A box not along the table's up (a principal box) stays as it is.
+  // A box not along the table's up (a principal box) stays as it is, however near its bottom.
   ss::ObjectBox tilted = cut_at_the_margin;
-  tilted.axes = Eigen::AngleAxisf(0.5f, Eigen::Vector3f::UnitX()).toRotationMatrix();
+  tilted.axes = Eigen::AngleAxisf(0.2f, Eigen::Vector3f::UnitX()).toRotationMatrix();
   EXPECT_FLOAT_EQ(ss::restingBox(tilted, table, 0.02f).size.z(), 0.1f);
+}
+
+TEST(Completion, AnObjectOnABookStandsOnItOneTouchingANeighbourDoesNot) {
+  // A 10 cm box whose foot the table's cut took (it starts 2.5 cm up), its box from its points.
+  ss::Cloud cloud;
+  test_clouds::addBox(cloud, {0.0f, 0.0f, 0.025f}, {0.1f, 0.1f, 0.1f}, 0.01f);
+  const std::vector<int> own = allOf(cloud);
+  ss::ObjectBox box;
+  box.center = Eigen::Vector3f(0.05f, 0.05f, 0.075f);
+  box.size = Eigen::Vector3f(0.1f, 0.1f, 0.1f);
+  // A book 2 cm thick under all of it.
+  std::vector<int> book;
+  for (float x = -0.05f; x < 0.2f; x += 0.01f) {
+    for (float y = -0.03f; y < 0.14f; y += 0.01f) {
+      book.push_back(static_cast<int>(cloud.size()));
+      cloud.push_back(at(x, y, 0.02f));
+    }
+  }
+  // A box touching its side, its foot as low.
+  std::vector<int> neighbour;
+  for (float z = 0.025f; z < 0.1f; z += 0.01f) {
+    for (float y = 0.0f; y <= 0.1f; y += 0.01f) {
+      neighbour.push_back(static_cast<int>(cloud.size()));
+      cloud.push_back(at(0.104f, y, z));
+    }
+  }
+  EXPECT_TRUE(ss::standsOnOtherPoints(box, cloud, own, book, 0.01f));
+  EXPECT_FALSE(ss::standsOnOtherPoints(box, cloud, own, neighbour, 0.01f));
+  EXPECT_FALSE(ss::standsOnOtherPoints(box, cloud, own, {}, 0.01f));
+  // The book only under one corner (a tenth of the footprint): the box stands on the table.
+  std::vector<int> corner;
+  for (int index : book) {
+    if (cloud.points[index].x < 0.03f && cloud.points[index].y < 0.03f) corner.push_back(index);
+  }
+  EXPECT_FALSE(ss::standsOnOtherPoints(box, cloud, own, corner, 0.01f));
 }

@@ -11,7 +11,8 @@ namespace ss = symmetry_segmentation;
 
 namespace {
 
-const ss::PlaneCoefficients kTable(0.0f, 0.0f, 1.0f, 0.0f);
+// The table z = 0, its normal scaled: heights are normalised.
+const ss::PlaneCoefficients kTable(0.0f, 0.0f, 2.0f, 0.0f);
 constexpr float kLink = 0.025f;         // 2.5 voxels of 1 cm
 constexpr float kScrapHeight = 0.015f;  // object_size.min_top_height
 
@@ -86,4 +87,25 @@ TEST(TableSpecks, OnlyTheSegmentsOwnPointsJoinPieces) {
             (std::vector<int>{0, 1, 2}));
   EXPECT_EQ(ss::withoutTableSpecks(cloud, neighbours, segment, ss::PlaneCoefficients::Zero(), kLink, kScrapHeight),
             segment);
+}
+
+TEST(TableSpecks, ALowPieceTheCallerKeepsStays) {
+  // A box and, 4 cm off its side, a flat piece 1 cm high (a book the cut joined to the box): a
+  // low piece, gone unless the caller keeps it (object_size keeps one that hides the table).
+  ss::Cloud cloud;
+  test_clouds::addBox(cloud, {0.0f, 0.0f, -0.005f}, {0.1f, 0.1f, 0.105f}, 0.01f);
+  const int box_size = static_cast<int>(cloud.size());
+  for (float x = 0.14f; x < 0.3f; x += 0.01f) {
+    for (float y = 0.0f; y < 0.1f; y += 0.01f) cloud.push_back(at(x, y, 0.01f));
+  }
+  const auto neighbours = neighboursWithin5cm(cloud);
+  const std::vector<int> segment = range(0, static_cast<int>(cloud.size()));
+  EXPECT_EQ(ss::withoutTableSpecks(cloud, neighbours, segment, kTable, kLink, kScrapHeight), range(0, box_size));
+  std::size_t asked = 0;
+  const auto keep_flat_pieces = [&](const std::vector<int>& piece) {
+    ++asked;
+    return piece.size() > 100;
+  };
+  EXPECT_EQ(ss::withoutTableSpecks(cloud, neighbours, segment, kTable, kLink, kScrapHeight, keep_flat_pieces), segment);
+  EXPECT_EQ(asked, 1u) << "asked once per low piece";
 }

@@ -32,7 +32,8 @@ struct ObjectBox {
 struct SegmentCompletion {
   std::vector<Eigen::Vector3f> points;  ///< Its unseen side: reflections (and turned copies) into
                                         ///< unobserved space, sides carried down to the support.
-  ObjectBox box;                        ///< Around the visible and the added points.
+  ObjectBox box;                        ///< Around the visible and the added points, and down to
+                                        ///< the support when the object rests on it.
   Eigen::Vector3f frame_position = Eigen::Vector3f::Zero();  ///< Symmetry frame: origin on the plane,
   Eigen::Quaternionf frame_orientation = Eigen::Quaternionf::Identity();  ///< x its normal, z up.
 };

@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 
 #include "disjoint_sets.h"
+#include "segment_links.h"
 #include "symmetry_segmentation/scene.h"
 #include "symmetry_segmentation/symmetry/sorted_indices.h"
 
@@ -30,21 +31,6 @@ inline Eigen::Vector3f toLab(const PointT& point) {
 inline float colorDifference(const Eigen::Vector3f& lab_a, const Eigen::Vector3f& lab_b) {
   const Eigen::Vector3f d = lab_a - lab_b;
   return std::sqrt(0.25f * d.x() * d.x() + d.y() * d.y() + d.z() * d.z());
-}
-
-// Calls visit(j, k) once for every link between positions j < k of `points` (sorted working-cloud
-// indices); `neighbours` lists each link from both ends.
-template <typename Visit>
-void forEachLink(const std::vector<int>& points, const std::vector<std::vector<int>>& neighbours, Visit visit) {
-  for (std::size_t j = 0; j < points.size(); ++j) {
-    const int p = points[j];
-    if (p < 0 || static_cast<std::size_t>(p) >= neighbours.size()) continue;
-    for (int q : neighbours[p]) {
-      if (q <= p) continue;
-      const int k = positionIn(points, q);
-      if (k >= 0) visit(static_cast<int>(j), k);
-    }
-  }
 }
 
 // Colour regions of `points`: positions joined through links whose ends differ in colour (`lab`,

@@ -2,6 +2,8 @@
 #include "symmetry_segmentation/symmetry/completion.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <unordered_set>
 #include <cassert>
 #include <iterator>
 #include <cmath>
@@ -38,6 +40,8 @@ constexpr float kMaxRoundDeviation = 0.1f;    // of the slice's median radius, r
 // box's axis, and at least this many of them.
 constexpr float kMaxHiddenSideGap = 0.03f;  // m
 constexpr std::size_t kMinHiddenSidePoints = 3;
+// An object stands on another segment when that one's points lie under this share of its columns.
+constexpr float kMinStandingOnShare = 0.25f;
 // A box turned further than ~8 deg off the support's up does not stand on it with its bottom.
 constexpr float kUprightBoxCos = 0.99f;
 // A column's lowest point is on a side (not a top or bottom face) when its normal is within 45 deg
@@ -342,6 +346,27 @@ ObjectBox restingBox(ObjectBox box, const PlaneCoefficients& support, float reac
   return box;
 }
 
+bool standsOnOtherPoints(const ObjectBox& box, const Cloud& cloud, const std::vector<int>& own,
+                         const std::vector<int>& others, float cell) {
+  if (!(cell > 0.0f)) return false;
+  const auto local = [&](int index) { return Eigen::Vector3f(box.axes.transpose() * (cloud.points[index].getVector3fMap() - box.center)); };
+  const auto column = [&](const Eigen::Vector3f& p) {
+    return (static_cast<std::int64_t>(std::floor(p.x() / cell)) << 32) ^
+           static_cast<std::int64_t>(static_cast<std::uint32_t>(static_cast<std::int32_t>(std::floor(p.y() / cell))));
+  };
+  std::unordered_set<std::int64_t> columns;
+  for (int index : own) columns.insert(column(local(index)));
+  if (columns.empty()) return false;
+  const float under = -0.5f * box.size.z() + cell;
+  std::unordered_set<std::int64_t> covered;
+  for (int index : others) {
+    const Eigen::Vector3f p = local(index);
+    if (p.z() < under && columns.count(column(p)) > 0) covered.insert(column(p));
+  }
+  // A neighbour touching its side shares its edge's columns; what it stands on is under many.
+  return static_cast<float>(covered.size()) >= kMinStandingOnShare * static_cast<float>(columns.size());
+}
+
 ObjectBox completedBox(const std::vector<Eigen::Vector3f>& visible, const std::vector<Eigen::Vector3f>& added,
                        const std::optional<Eigen::Vector3f>& up, float trim, float noise) {
   Cloud seen_cloud;
@@ -456,7 +481,7 @@ void CompletionStage::run(PipelineState& state) const {
   std::vector<ObjectBox> boxes;
   boxes.reserve(state.segments.size());
   for (const CandidateSegment& segment : state.segments) boxes.push_back(visibleBox(state, segment));
-  std::size_t added = 0, revolved = 0, grounded = 0;
+  std::size_t added = 0, revolved = 0, grounded = 0, resting = 0;
   for (std::size_t s = 0; s < state.segments.size(); ++s) {
     CandidateSegment& segment = state.segments[s];
     std::vector<Eigen::Vector3f> points;
@@ -494,12 +519,19 @@ void CompletionStage::run(PipelineState& state) const {
       segment.grounded = onePerCell(groundedSidePoints(cloud, segment.points, *table, voxel_size_, hidden_under), voxel_size_);
       grounded += segment.grounded.size();
     }
+    if (table && params_.rest_on_support) {
+      segment.rests_on_support = std::none_of(state.segments.begin(), state.segments.end(), [&](const CandidateSegment& other) {
+        return &other != &segment && standsOnOtherPoints(boxes[s], cloud, segment.points, other.points, voxel_size_);
+      });
+      resting += segment.rests_on_support ? 1 : 0;
+    }
     segment.completion = onePerCell(points, voxel_size_);
     added += segment.completion->size();
   }
   state.count("points", added);
   state.count("revolved", revolved);
   state.count("grounded", grounded);
+  state.count("resting", resting);
 }
 
 }  // namespace symmetry_segmentation

@@ -190,13 +190,19 @@ void ObjectSizeStage::run(PipelineState& state) const {
     return false;
   };
   // The table's specks go before any test: they neither make a segment large nor its top high.
+  // A low piece that hides the table stays, as a thin object's segment does (a book beside a
+  // box the cut joined to it). The segment's scores stay the cut's.
   std::size_t specks = 0;
+  const std::function<bool(const std::vector<int>&)> hidesTheTable = [&](const std::vector<int>& piece) {
+    if (state.scene == nullptr || !state.scene->cloud) return false;
+    return tableSeen().seenShareUnder(*state.cloud, piece).value_or(1.0f) < params_.max_table_seen_share;
+  };
   if (check_top && state.graph) {
     for (CandidateSegment& segment : state.segments) {
       const float scrap_height = params_.min_top_height * noiseGrowth(*state.cloud, segment.points, state.prepared);
       std::vector<int> kept = withoutTableSpecks(*state.cloud, state.graph->neighbours(), segment.points,
                                                  state.prepared.table_plane, kPieceLinkVoxels * voxel_size_,
-                                                 scrap_height);
+                                                 scrap_height, hidesTheTable);
       specks += segment.points.size() - kept.size();
       // Mostly specks, the segment was the table's noise with a scrap of something on it.
       if (2 * kept.size() < segment.points.size()) kept.clear();

@@ -64,8 +64,8 @@ namespace {
 // margin's cut took its lowest points (a thin object's top stands two margins up: see object_size).
 constexpr float kRestingMargins = 2.0f;
 
-/// The completed object: the added points, the box around them and the visible input points, and
-/// the symmetry frame at the centroid of the working points and the added ones (both 1 cm apart).
+/// The completed object: the added points, the box around them and the visible input points (down
+/// to the support when the object rests on it), and the symmetry frame at the centroid of the working points and the added ones (both 1 cm apart).
 SegmentCompletion completedObject(const PipelineState& state, const CandidateSegment& candidate,
                                   const std::vector<int>& input_points) {
   SegmentCompletion completion;
@@ -76,7 +76,7 @@ SegmentCompletion completedObject(const PipelineState& state, const CandidateSeg
   const std::optional<Eigen::Vector3f> up = state.up ? state.up : state.scene->up;
   completion.box = groundedBox(completedBox(visible, completion.points, up, kAddedPointsTrim, state.prepared.table_noise),
                                candidate.grounded);
-  if (state.prepared.has_table) {
+  if (candidate.rests_on_support && state.prepared.has_table) {
     completion.box = restingBox(completion.box, state.prepared.table_plane, kRestingMargins * state.prepared.table_margin);
   }
   completion.points.insert(completion.points.end(), candidate.grounded.begin(), candidate.grounded.end());

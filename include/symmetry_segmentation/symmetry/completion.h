@@ -113,9 +113,17 @@ ObjectBox groundedBox(ObjectBox box, const std::vector<Eigen::Vector3f>& grounde
 /// `box` (its z along the support's up) of an object resting on the `support` (oriented up):
 /// when its bottom is over the support by less than `reach`, it reaches down to the support.
 /// The table's cut takes an object's lowest centimetre or so with the table, and an object
-/// standing there goes on down to it (a stacked one stands higher, a ball's hidden underside
-/// stays hidden).
+/// standing there goes on down to it. The caller tells whether it stands on the support
+/// (standsOnOtherPoints).
 ObjectBox restingBox(ObjectBox box, const PlaneCoefficients& support, float reach);
+
+/// Whether `others` (indices into `cloud`) lie under the object of `own` points and `box` (its z
+/// along the support's up): lower than `cell` over the box's bottom in a quarter or more of the
+/// `cell`-wide columns that hold own points. An object on a book or a board thinner than the
+/// resting reach stands on that, not on the table; a neighbour touching its side shares a few
+/// edge columns, and one in the empty corner of a can's box none.
+bool standsOnOtherPoints(const ObjectBox& box, const Cloud& cloud, const std::vector<int>& own,
+                         const std::vector<int>& others, float cell);
 
 /// The first of `points` in each `cell`-sized cube, in order.
 std::vector<Eigen::Vector3f> onePerCell(const std::vector<Eigen::Vector3f>& points, float cell);

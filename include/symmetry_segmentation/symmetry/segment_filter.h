@@ -33,6 +33,9 @@ struct CandidateSegment {
   std::optional<std::vector<Eigen::Vector3f>> completion;
   /// Its sides carried down through unobserved space to the support (stage completion).
   std::vector<Eigen::Vector3f> grounded;
+  /// It stands on the support, on no other segment: its completed box reaches down to the
+  /// support (stage completion).
+  bool rests_on_support = false;
 };
 
 /// Occlusion score above s_occl, smoothness score below s_smooth, at least min_segment_points.

@@ -408,7 +408,7 @@ inline void describeParameters(ParameterList<ObjectSizeParams>& list) {
            "a segment mostly on one plane wider than this is a wall or table, not an object; 0: no limit")
       .add("min_plane_share", &P::min_plane_share, 0.0, 1.0, "", "mostly on one plane: this share of its points")
       .add("min_top_height", &P::min_top_height, 0.0, 1.0, "m",
-           "a segment whose top (95th percentile) is lower over the table is a scrap of the table's noise (in one camera's view times the square of its median distance over the table's, 1 to 4); a piece of a segment wholly that low, over 2.5 voxels from the rest, is a speck of that noise and leaves it (a segment mostly specks goes); 0: off")
+           "a segment whose top (95th percentile) is lower over the table is a scrap of the table's noise (in one camera's view times the square of its median distance over the table's, 1 to 4); a piece of a segment wholly that low, over 2.5 voxels from the rest, is a speck of that noise and leaves it unless it hides the table as below (a segment mostly specks goes); 0: off")
       .add("max_table_seen_share", &P::max_table_seen_share, 0.0, 1.0, "",
            "...unless the table was seen under less than this share of its footprint's inside: a thin object lying on the table hides it, the table's noise has it all through")
       .add("min_table_seen_under_raised", &P::min_table_seen_under_raised, 0.0, 1.0, "",
@@ -465,6 +465,7 @@ inline void describeParameters(ParameterList<CoaxialPieceParams>& list) {
 struct CompletionParams {
   int revolution_steps = 12;
   bool ground_to_support = true;
+  bool rest_on_support = true;
 };
 
 inline void describeParameters(ParameterList<CompletionParams>& list) {
@@ -472,7 +473,9 @@ inline void describeParameters(ParameterList<CompletionParams>& list) {
            "a segment turning about a vertical axis (coaxial_pieces.min_axis_share) is also completed by copies turned "
            "by this many equal steps about it; 0: by its reflection alone")
       .add("ground_to_support", &CompletionParams::ground_to_support,
-           "a side whose lower part is hidden runs on down to the support where all the space under it is unobserved");
+           "a side whose lower part is hidden runs on down to the support where all the space under it is unobserved")
+      .add("rest_on_support", &CompletionParams::rest_on_support,
+           "the completed box of an object whose box ends under two table margins over the support, on no other segment, reaches down to it (the table's cut took its foot)");
 }
 
 struct SymmetryParams {
