@@ -12,6 +12,7 @@
 #include <set>
 #include <limits>
 
+#include "symmetry_segmentation/table_grid.h"
 #include "symmetry_segmentation/occupancy.h"
 #include "symmetry_segmentation/quantile.h"
 #include "symmetry_segmentation/symmetry/pipeline_state.h"
@@ -351,8 +352,7 @@ bool standsOnOtherPoints(const ObjectBox& box, const Cloud& cloud, const std::ve
   if (!(cell > 0.0f)) return false;
   const auto local = [&](int index) { return Eigen::Vector3f(box.axes.transpose() * (cloud.points[index].getVector3fMap() - box.center)); };
   const auto column = [&](const Eigen::Vector3f& p) {
-    return (static_cast<std::int64_t>(std::floor(p.x() / cell)) << 32) ^
-           static_cast<std::int64_t>(static_cast<std::uint32_t>(static_cast<std::int32_t>(std::floor(p.y() / cell))));
+    return TableGrid::key(static_cast<std::int64_t>(std::floor(p.x() / cell)), static_cast<std::int64_t>(std::floor(p.y() / cell)));
   };
   std::unordered_set<std::int64_t> columns;
   for (int index : own) columns.insert(column(local(index)));
