@@ -438,13 +438,15 @@ TEST(Completion, AnObjectOnABookStandsOnItOneTouchingANeighbourDoesNot) {
       cloud.push_back(at(0.104f, y, z));
     }
   }
-  EXPECT_TRUE(ss::standsOnOtherPoints(box, cloud, own, book, 0.01f));
-  EXPECT_FALSE(ss::standsOnOtherPoints(box, cloud, own, neighbour, 0.01f));
-  EXPECT_FALSE(ss::standsOnOtherPoints(box, cloud, own, {}, 0.01f));
+  const ss::ObjectColumns columns(box, cloud, own, 0.01f);
+  EXPECT_TRUE(columns.standsOn(book));
+  EXPECT_FALSE(columns.standsOn(neighbour));
+  EXPECT_FALSE(columns.standsOn({}));
+  EXPECT_FALSE(ss::ObjectColumns(box, cloud, {}, 0.01f).standsOn(book)) << "no own points, no columns";
   // The book only under one corner (a tenth of the footprint): the box stands on the table.
   std::vector<int> corner;
   for (int index : book) {
     if (cloud.points[index].x < 0.03f && cloud.points[index].y < 0.03f) corner.push_back(index);
   }
-  EXPECT_FALSE(ss::standsOnOtherPoints(box, cloud, own, corner, 0.01f));
+  EXPECT_FALSE(columns.standsOn(corner));
 }

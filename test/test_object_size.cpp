@@ -263,13 +263,35 @@ TEST(ObjectSize, AFarScrapOfOneCamerasNoiseStandsHigherThanANearOne) {
   EXPECT_EQ(state.segments.size(), 2u);
 }
 
+namespace {
+
+// The working cloud of a 10 cm box standing on the table (z = 0), its points, for the specks.
+std::shared_ptr<ss::Cloud> boxOnTheTable(std::vector<int>& box) {
+  auto working = std::make_shared<ss::Cloud>();
+  test_clouds::addBox(*working, {0.0f, 0.0f, -0.005f}, {0.1f, 0.1f, 0.105f}, 0.01f);
+  box = allOf(*working);
+  return working;
+}
+
+// The cut's graph over `working` with a 0.9 m table under it, seen from over its front edge (the
+// map goes in the state: the graph reads it).
+void addTheCutsGraph(ss::PipelineState& state, const std::shared_ptr<ss::Cloud>& working) {
+  ss::Cloud with_table = *working;
+  test_clouds::addTable(with_table, 0.9f, 0.01f);
+  state.occupancy = std::make_unique<ss::OccupancyMap>(
+      ss::OccupancyMap::fromRayCasting(with_table, {Eigen::Vector3f(0.0f, -0.8f, 0.8f)}));
+  state.graph = std::make_unique<ss::SymmetricGraphCut>(working, *state.occupancy, ss::PlaneCoefficients(0.0f, 0.0f, 1.0f, 0.0f),
+                                                        ss::SymmetryCutParams{});
+}
+
+}  // namespace
+
 TEST(ObjectSize, TheTablesSpecksLeaveASegmentOneMadeOfThemGoes) {
   // A 10 cm box, and a chain of the table's specks (1.2 cm over it, 2 cm apart) from 4 cm off
   // its side: the cut's neighbour graph (links up to 5 cm) carries them into the box's segment.
   // A second segment is specks but for three points 5 cm up: mostly specks, it goes whole.
-  auto working = std::make_shared<ss::Cloud>();
-  test_clouds::addBox(*working, {0.0f, 0.0f, -0.005f}, {0.1f, 0.1f, 0.105f}, 0.01f);
-  const std::vector<int> box = allOf(*working);
+  std::vector<int> box;
+  const auto working = boxOnTheTable(box);
   std::vector<int> box_and_specks = box;
   for (float x = 0.14f; x < 0.5f; x += 0.02f) {
     box_and_specks.push_back(static_cast<int>(working->size()));
@@ -284,11 +306,7 @@ TEST(ObjectSize, TheTablesSpecksLeaveASegmentOneMadeOfThemGoes) {
     specks_and_a_scrap.push_back(static_cast<int>(working->size()));
     working->push_back(at(-0.32f, y, 0.05f));
   }
-  ss::Cloud with_table = *working;
-  test_clouds::addTable(with_table, 0.9f, 0.01f);
   const ss::PlaneCoefficients table(0.0f, 0.0f, 1.0f, 0.0f);
-  const ss::OccupancyMap occupancy =
-      ss::OccupancyMap::fromRayCasting(with_table, {Eigen::Vector3f(0.0f, -0.8f, 0.8f)});
 
   ss::PipelineState state = overTheTable(nullptr, working, table, 0.005f, box_and_specks, specks_and_a_scrap);
   const ss::ObjectSizeParams params;
@@ -297,7 +315,7 @@ TEST(ObjectSize, TheTablesSpecksLeaveASegmentOneMadeOfThemGoes) {
   ASSERT_EQ(state.segments.size(), 2u);
   EXPECT_EQ(state.segments[0].points, box_and_specks);
 
-  state.graph = std::make_unique<ss::SymmetricGraphCut>(working, occupancy, table, ss::SymmetryCutParams{});
+  addTheCutsGraph(state, working);
   ss::ObjectSizeStage(params, 0.01f).run(state);
   ASSERT_EQ(state.segments.size(), 1u);
   EXPECT_EQ(state.segments[0].points, box);
@@ -306,9 +324,8 @@ TEST(ObjectSize, TheTablesSpecksLeaveASegmentOneMadeOfThemGoes) {
 TEST(ObjectSize, ABookTheCutJoinedToABoxIsNoSpeck) {
   // The cut joined a box and a book lying flat 4 cm beside it: the book is as low as the table's
   // specks, but it hides the table (seen all round it, never under it), so it stays.
-  auto working = std::make_shared<ss::Cloud>();
-  test_clouds::addBox(*working, {0.0f, 0.0f, -0.005f}, {0.1f, 0.1f, 0.105f}, 0.01f);
-  const std::vector<int> box = allOf(*working);
+  std::vector<int> box;
+  const auto working = boxOnTheTable(box);
   std::vector<int> segment = box;
   for (float x = 0.14f; x < 0.34f; x += 0.01f) {
     for (float y = 0.0f; y < 0.15f; y += 0.01f) {
@@ -326,15 +343,11 @@ TEST(ObjectSize, ABookTheCutJoinedToABoxIsNoSpeck) {
     }
   }
   for (const auto& point : *working) input.cloud->push_back(point);
-  ss::Cloud with_table = *working;
-  test_clouds::addTable(with_table, 0.9f, 0.01f);
-  const ss::PlaneCoefficients table(0.0f, 0.0f, 1.0f, 0.0f);
-  const ss::OccupancyMap occupancy =
-      ss::OccupancyMap::fromRayCasting(with_table, {Eigen::Vector3f(0.0f, -0.8f, 0.8f)});
 
-  ss::PipelineState state = overTheTable(&input, working, table, 0.005f, segment, {});
+  ss::PipelineState state =
+      overTheTable(&input, working, ss::PlaneCoefficients(0.0f, 0.0f, 1.0f, 0.0f), 0.005f, segment, {});
   state.segments.resize(1);
-  state.graph = std::make_unique<ss::SymmetricGraphCut>(working, occupancy, table, ss::SymmetryCutParams{});
+  addTheCutsGraph(state, working);
   ss::ObjectSizeStage(ss::ObjectSizeParams{}, 0.01f).run(state);
   ASSERT_EQ(state.segments.size(), 1u);
   EXPECT_EQ(state.segments[0].points, segment);

@@ -59,6 +59,11 @@ inline void describeParameters(ParameterList<PreprocessParams>& list) {
            "with gravity known (scene up, node ~up_frame), the supporting plane's normal is within this angle of up");
 }
 
+/// The band over the table, in table margins, where the table's cut and noise leave an object's
+/// foot uncertain: an object whose top stands lower is thin (a book, a board), one whose box ends
+/// lower rests on the table and reaches down to it.
+constexpr float kTableBandMargins = 2.0f;
+
 struct PreprocessedScene {
   Cloud::Ptr cloud;                        ///< Downsampled object points with normals.
   std::vector<int> input_to_voxel;         ///< Per input point: index into `cloud`, or -1 if dropped.

@@ -347,24 +347,31 @@ ObjectBox restingBox(ObjectBox box, const PlaneCoefficients& support, float reac
   return box;
 }
 
-bool standsOnOtherPoints(const ObjectBox& box, const Cloud& cloud, const std::vector<int>& own,
-                         const std::vector<int>& others, float cell) {
-  if (!(cell > 0.0f)) return false;
-  const auto local = [&](int index) { return Eigen::Vector3f(box.axes.transpose() * (cloud.points[index].getVector3fMap() - box.center)); };
-  const auto column = [&](const Eigen::Vector3f& p) {
-    return TableGrid::key(static_cast<std::int64_t>(std::floor(p.x() / cell)), static_cast<std::int64_t>(std::floor(p.y() / cell)));
-  };
-  std::unordered_set<std::int64_t> columns;
-  for (int index : own) columns.insert(column(local(index)));
-  if (columns.empty()) return false;
-  const float under = -0.5f * box.size.z() + cell;
+ObjectColumns::ObjectColumns(const ObjectBox& box, const Cloud& cloud, const std::vector<int>& own, float cell)
+    : box_(box), cloud_(cloud), cell_(cell) {
+  if (!(cell > 0.0f)) return;
+  for (int index : own) columns_.insert(column(local(index)));
+}
+
+Eigen::Vector3f ObjectColumns::local(int index) const {
+  return box_.axes.transpose() * (cloud_.points[index].getVector3fMap() - box_.center);
+}
+
+std::int64_t ObjectColumns::column(const Eigen::Vector3f& local_point) const {
+  return TableGrid::key(static_cast<std::int64_t>(std::floor(local_point.x() / cell_)),
+                        static_cast<std::int64_t>(std::floor(local_point.y() / cell_)));
+}
+
+bool ObjectColumns::standsOn(const std::vector<int>& others) const {
+  if (columns_.empty()) return false;
+  const float under = -0.5f * box_.size.z() + cell_;
   std::unordered_set<std::int64_t> covered;
   for (int index : others) {
     const Eigen::Vector3f p = local(index);
-    if (p.z() < under && columns.count(column(p)) > 0) covered.insert(column(p));
+    if (p.z() < under && columns_.count(column(p)) > 0) covered.insert(column(p));
   }
   // A neighbour touching its side shares its edge's columns; what it stands on is under many.
-  return static_cast<float>(covered.size()) >= kMinStandingOnShare * static_cast<float>(columns.size());
+  return static_cast<float>(covered.size()) >= kMinStandingOnShare * static_cast<float>(columns_.size());
 }
 
 ObjectBox completedBox(const std::vector<Eigen::Vector3f>& visible, const std::vector<Eigen::Vector3f>& added,
@@ -520,8 +527,9 @@ void CompletionStage::run(PipelineState& state) const {
       grounded += segment.grounded.size();
     }
     if (table && params_.rest_on_support) {
+      const ObjectColumns columns(boxes[s], cloud, segment.points, voxel_size_);
       segment.rests_on_support = std::none_of(state.segments.begin(), state.segments.end(), [&](const CandidateSegment& other) {
-        return &other != &segment && standsOnOtherPoints(boxes[s], cloud, segment.points, other.points, voxel_size_);
+        return &other != &segment && columns.standsOn(other.points);
       });
       resting += segment.rests_on_support ? 1 : 0;
     }

@@ -24,8 +24,6 @@ namespace symmetry_segmentation {
 namespace {
 
 constexpr int kPlaneIterations = 200;
-// A thin object's top stands this many table margins over the table (see ObjectSizeStage::run).
-constexpr float kThinObjectMargins = 2.0f;
 // A scrap's height grows with the camera's noise by at most this (4: at twice the table's
 // distance); beyond, a frame's far end is better cut by preprocessing.max_range.
 constexpr float kMaxNoiseGrowth = 4.0f;
@@ -179,7 +177,7 @@ void ObjectSizeStage::run(PipelineState& state) const {
     // Without the input cloud nothing tells a scrap from a thin object: the height decides. So
     // it does for a top under two margins (6 sigma of the table's noise): the table's own
     // surface raised by a few millimetres (a cloth, a warp) hides "the table" too.
-    if (state.scene == nullptr || !state.scene->cloud || top < kThinObjectMargins * state.prepared.table_margin) {
+    if (state.scene == nullptr || !state.scene->cloud || top < kTableBandMargins * state.prepared.table_margin) {
       return true;
     }
     // A footprint with no inner cell hides nothing.

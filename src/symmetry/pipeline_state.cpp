@@ -60,10 +60,6 @@ PipelineState preparePipeline(const Scene& scene, const PreprocessParams& prepro
 
 namespace {
 
-// An object whose box ends less than this many table margins over the table rests on it: the
-// margin's cut took its lowest points (a thin object's top stands two margins up: see object_size).
-constexpr float kRestingMargins = 2.0f;
-
 /// The completed object: the added points, the box around them and the visible input points (down
 /// to the support when the object rests on it), and the symmetry frame at the centroid of the working points and the added ones (both 1 cm apart).
 SegmentCompletion completedObject(const PipelineState& state, const CandidateSegment& candidate,
@@ -77,7 +73,7 @@ SegmentCompletion completedObject(const PipelineState& state, const CandidateSeg
   completion.box = groundedBox(completedBox(visible, completion.points, up, kAddedPointsTrim, state.prepared.table_noise),
                                candidate.grounded);
   if (candidate.rests_on_support && state.prepared.has_table) {
-    completion.box = restingBox(completion.box, state.prepared.table_plane, kRestingMargins * state.prepared.table_margin);
+    completion.box = restingBox(completion.box, state.prepared.table_plane, kTableBandMargins * state.prepared.table_margin);
   }
   completion.points.insert(completion.points.end(), candidate.grounded.begin(), candidate.grounded.end());
   Eigen::Vector3f centroid = Eigen::Vector3f::Zero();

@@ -9,8 +9,10 @@
 // that land in unobserved space are its back. Runs last: it changes no segment, it
 // describes each one (reportedSegments turns it into the completed box and the symmetry frame).
 
+#include <cstdint>
 #include <functional>
 #include <optional>
+#include <unordered_set>
 #include <vector>
 
 #include <Eigen/Core>
@@ -114,16 +116,32 @@ ObjectBox groundedBox(ObjectBox box, const std::vector<Eigen::Vector3f>& grounde
 /// when its bottom is over the support by less than `reach`, it reaches down to the support.
 /// The table's cut takes an object's lowest centimetre or so with the table, and an object
 /// standing there goes on down to it. The caller tells whether it stands on the support
-/// (standsOnOtherPoints).
+/// (ObjectColumns::standsOn).
 ObjectBox restingBox(ObjectBox box, const PlaneCoefficients& support, float reach);
 
-/// Whether `others` (indices into `cloud`) lie under the object of `own` points and `box` (its z
-/// along the support's up): lower than `cell` over the box's bottom in a quarter or more of the
-/// `cell`-wide columns that hold own points. An object on a book or a board thinner than the
-/// resting reach stands on that, not on the table; a neighbour touching its side shares a few
-/// edge columns, and one in the empty corner of a can's box none.
-bool standsOnOtherPoints(const ObjectBox& box, const Cloud& cloud, const std::vector<int>& own,
-                         const std::vector<int>& others, float cell);
+/// The `cell`-wide columns (across the support's up) that hold an object's points, for asking
+/// whether it stands on another object: the columns are gathered once, then each other segment is
+/// asked in turn. `cloud` must outlive it.
+class ObjectColumns {
+ public:
+  /// The columns of `own` (indices into `cloud`) in `box`'s frame (its z along the support's up).
+  ObjectColumns(const ObjectBox& box, const Cloud& cloud, const std::vector<int>& own, float cell);
+
+  /// Whether `others` (indices into the same cloud) lie under the object: lower than `cell` over
+  /// the box's bottom in a quarter or more of its columns. An object on a book or a board thinner
+  /// than the resting reach stands on that, not on the table; a neighbour touching its side shares
+  /// a few edge columns, and one in the empty corner of a can's box none.
+  bool standsOn(const std::vector<int>& others) const;
+
+ private:
+  Eigen::Vector3f local(int index) const;
+  std::int64_t column(const Eigen::Vector3f& local_point) const;
+
+  ObjectBox box_;
+  const Cloud& cloud_;
+  float cell_;
+  std::unordered_set<std::int64_t> columns_;
+};
 
 /// The first of `points` in each `cell`-sized cube, in order.
 std::vector<Eigen::Vector3f> onePerCell(const std::vector<Eigen::Vector3f>& points, float cell);
