@@ -232,6 +232,35 @@ TEST(ObjectSize, AShelfOverTheTableIsNoObjectWhatIsSeenOverAnOccluderIs) {
   EXPECT_EQ(state.segments.size(), 2u);
 }
 
+// Seen from over the table's front, a shelf shades the table under its back: here the table is
+// seen under only its front quarter. It still hangs over the table; what is seen over an
+// occluder has none of the table under it.
+TEST(ObjectSize, AShelfShadingTheTableUnderItIsNoObjectEither) {
+  const auto shaded = [](float x, float y) { return x > 0.04f && x < 0.21f && y > -0.05f && y < 0.11f; };
+  ss::Scene input;
+  input.cloud = std::make_shared<ss::Cloud>();
+  addSeenTable(*input.cloud, shaded);
+  auto working = std::make_shared<ss::Cloud>();
+  const std::vector<int> shelf = addFlatTop(*working, 0.05f, 0.2f, -0.1f, 0.1f, 0.35f);
+  for (const auto& point : *working) input.cloud->push_back(point);
+  const ss::PlaneCoefficients table(0.0f, 0.0f, 1.0f, 0.0f);
+  const float seen = ss::TableSightings(*input.cloud, table, 0.005f, 0.01f).seenShareUnder(*working, shelf).value_or(0.0f);
+  ASSERT_GT(seen, 0.15f);
+  ASSERT_LT(seen, 0.35f);
+
+  ss::PipelineState state = overTheTable(&input, working, table, 0.005f, shelf, {});
+  state.segments.resize(1);
+  ss::ObjectSizeParams params;
+  ss::ObjectSizeStage(params, 0.01f).run(state);
+  EXPECT_TRUE(state.segments.empty());
+  // Asking for the table seen under half of it, the shelf stays.
+  params.min_table_seen_under_raised = 0.5f;
+  state.segments.resize(1);
+  state.segments[0].points = shelf;
+  ss::ObjectSizeStage(params, 0.01f).run(state);
+  EXPECT_EQ(state.segments.size(), 1u);
+}
+
 TEST(ObjectSize, AFarScrapOfOneCamerasNoiseStandsHigherThanANearOne) {
   // One camera 1 m over the table, which it sees at a median distance of 1 m. Two patches of
   // the table's noise 3.2 cm high, the table seen through both: one 1 m from the camera, one
