@@ -1,5 +1,6 @@
 #include "symmetry_segmentation/synthetic/room.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "symmetry_segmentation/synthetic/object_library.h"
@@ -7,6 +8,9 @@
 namespace symmetry_segmentation {
 namespace synthetic {
 namespace {
+
+// The least gap between a chair's back and the table's end (m): a chair pushed in close.
+constexpr double kChairClearance = 0.02;
 
 SyntheticObject slab(const Eigen::Vector3d& min, const Eigen::Vector3d& max, const Rgb& color) {
   SyntheticObject object;
@@ -57,9 +61,13 @@ void addFloorClutter(SyntheticWorld& world, const TableSize& table, Random& rand
       const double seat_z = floor_z + random.uniform(0.42, 0.5);
       const double half = random.uniform(0.2, 0.24);
       const Rgb color = randomColor(random, 20, 160);
-      world.background.push_back(slab({x - half, y - half, seat_z - 0.04}, {x + half, y + half, seat_z}, color));
+      // Its back rises over the table top: it stands clear of the table's end, never through it.
+      // (Moved, not redrawn: every later draw stays as it was.)
+      const double chair_x = side * std::max(std::fabs(x), table.size_x / 2 + half + kChairClearance);
       world.background.push_back(
-          slab({x - half, y + half - 0.03, seat_z}, {x + half, y + half, seat_z + random.uniform(0.35, 0.5)}, color));
+          slab({chair_x - half, y - half, seat_z - 0.04}, {chair_x + half, y + half, seat_z}, color));
+      world.background.push_back(slab({chair_x - half, y + half - 0.03, seat_z},
+                                      {chair_x + half, y + half, seat_z + random.uniform(0.35, 0.5)}, color));
       break;
     }
   }
