@@ -366,6 +366,40 @@ TEST(SupportPolygon, IsTheTablesOwnPointsGrownByTheMargin) {
   EXPECT_FALSE(ss::SupportPolygon::fromPlanePoints(line, ss::PlaneCoefficients(0, 0, 1, 0), 0.01f, 0.045f, 0.05f));
 }
 
+TEST(SupportPolygon, AWallCrossingThePlaneGivesItNoExtent) {
+  // A wall 3 cm behind the table's far edge, 3 m wide, seen above and below the table's height:
+  // where it crosses the plane it leaves a strip of points joined to the table's. The strip must
+  // not stretch the polygon along the wall over what stands beside the table (a chair's back).
+  ss::Cloud cloud;
+  test_clouds::addTable(cloud, 0.4f, 0.015f);
+  test_clouds::addWall(cloud, 0.43f, 1.5f, -0.7f, 0.8f, 0.015f);
+  const auto polygon = ss::SupportPolygon::fromPlanePoints(cloud, ss::PlaneCoefficients(0, 0, 1, 0), 0.01f, 0.045f, 0.05f);
+  ASSERT_TRUE(polygon.has_value());
+  EXPECT_TRUE(polygon->contains({0.3f, 0.3f, 0.1f})) << "over the table";
+  EXPECT_TRUE(polygon->contains({0.44f, 0.0f, 0.1f})) << "within the margin";
+  EXPECT_FALSE(polygon->contains({0.8f, 0.35f, 0.1f})) << "beside the table's end, along the wall";
+  EXPECT_FALSE(polygon->contains({-1.2f, 0.4f, 0.1f})) << "far along the wall";
+
+  // Seen only above the table (nothing under its strip), the wall still stretches the polygon:
+  // the rule needs the surface seen going on below the plane.
+  ss::Cloud above_only;
+  test_clouds::addTable(above_only, 0.4f, 0.015f);
+  test_clouds::addWall(above_only, 0.43f, 1.5f, 0.0f, 0.8f, 0.015f);
+  const auto stretched =
+      ss::SupportPolygon::fromPlanePoints(above_only, ss::PlaneCoefficients(0, 0, 1, 0), 0.01f, 0.045f, 0.05f);
+  ASSERT_TRUE(stretched.has_value());
+  EXPECT_TRUE(stretched->contains({0.8f, 0.35f, 0.1f}));
+
+  // Objects standing on a table seen only as a rim around them (a fused scan cropped to the
+  // tabletop): their feet lie in the plane's band with nothing under them and keep their extent.
+  ss::Cloud rim;
+  test_clouds::addTable(rim, 0.1f, 0.015f);
+  test_clouds::addBox(rim, Eigen::Vector3f(0.08f, -0.05f, -0.01f), Eigen::Vector3f(0.2f, 0.1f, 0.1f), 0.015f);  // its lowest ring in the band
+  const auto with_feet = ss::SupportPolygon::fromPlanePoints(rim, ss::PlaneCoefficients(0, 0, 1, 0), 0.01f, 0.045f, 0.0f);
+  ASSERT_TRUE(with_feet.has_value());
+  EXPECT_TRUE(with_feet->contains({0.26f, 0.0f, 0.05f})) << "under the box, past the rim";
+}
+
 TEST(Preprocessing, KeepsOnlyWhatStandsOverTheTable) {
   // A single view: a table in front of a wall, the floor below, a lamp's shade hanging high
   // over the table and a box on it. Only the box goes on.

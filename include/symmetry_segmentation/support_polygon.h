@@ -17,7 +17,10 @@ class SupportPolygon {
  public:
   /// The polygon of the points of `cloud` within `on_plane_distance` of `plane` (the largest
   /// group of them connected within `connect_distance`: a coplanar shelf or second table apart
-  /// stays out), grown by `margin`. None when fewer than three such points span an area.
+  /// stays out), grown by `margin`. `plane` faces up (the side things stand on). Points of the
+  /// group with a surface seen 3-6 cm right under them (a wall or a chair's back crossing the
+  /// plane; a table hides what is under it) give it no extent. None when fewer than three such
+  /// points span an area.
   static std::optional<SupportPolygon> fromPlanePoints(const Cloud& cloud, const PlaneCoefficients& plane,
                                                        float on_plane_distance, float connect_distance, float margin);
 

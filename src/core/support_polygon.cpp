@@ -18,6 +18,13 @@ using FlatCloud = pcl::PointCloud<pcl::PointXYZ>;
 constexpr int kGrowDirections = 16;
 // Spans thinner than this (m) are a line, not an area: qhull would fail on them.
 constexpr float kMinSpan = 1e-3f;
+// A surface seen this far under a point of the plane (m), within kUnderReach of it across the
+// plane, runs on below the plane: that point is where a wall or a chair's back crosses the
+// plane, not the table, which hides what is under it. (The band starts clear of the table's
+// noise and its own underside; one or two coarse voxels across.)
+constexpr float kUnderLow = 0.03f;
+constexpr float kUnderHigh = 0.06f;
+constexpr float kUnderReach = 0.015f;
 
 bool spansAnArea(const FlatCloud& points) {
   if (points.size() < 3) return false;
@@ -59,6 +66,21 @@ std::vector<Eigen::Vector2f> hull2d(const FlatCloud::Ptr& points) {
   return corners;
 }
 
+/// Per point of `flat`: whether a point of `under` (same plane coordinates) lies within
+/// kUnderReach of it.
+std::vector<bool> seenUnder(const FlatCloud::Ptr& flat, const FlatCloud::Ptr& under) {
+  std::vector<bool> result(flat->size(), false);
+  if (under->empty()) return result;
+  pcl::search::KdTree<pcl::PointXYZ> tree;
+  tree.setInputCloud(under);
+  std::vector<int> found;
+  std::vector<float> squared;
+  for (std::size_t i = 0; i < flat->size(); ++i) {
+    result[i] = tree.radiusSearch(flat->points[i], kUnderReach, found, squared, 1) > 0;
+  }
+  return result;
+}
+
 }  // namespace
 
 std::optional<SupportPolygon> SupportPolygon::fromPlanePoints(const Cloud& cloud, const PlaneCoefficients& plane,
@@ -73,11 +95,14 @@ std::optional<SupportPolygon> SupportPolygon::fromPlanePoints(const Cloud& cloud
   polygon.v_ = normal.cross(polygon.u_);
 
   auto on_plane = std::make_shared<FlatCloud>();
+  auto under_plane = std::make_shared<FlatCloud>();
   for (const auto& p : cloud.points) {
     const Eigen::Vector3f point = p.getVector3fMap();
-    if (!point.allFinite() || std::fabs(normal.dot(point) + plane[3] / norm) > on_plane_distance) continue;
+    if (!point.allFinite()) continue;
+    const float height = normal.dot(point) + plane[3] / norm;
     const Eigen::Vector2f flat = polygon.inPlane(point);
-    on_plane->push_back(pcl::PointXYZ(flat.x(), flat.y(), 0.0f));
+    if (std::fabs(height) <= on_plane_distance) on_plane->push_back(pcl::PointXYZ(flat.x(), flat.y(), 0.0f));
+    if (height <= -kUnderLow && height >= -kUnderHigh) under_plane->push_back(pcl::PointXYZ(flat.x(), flat.y(), 0.0f));
   }
   if (on_plane->size() < 3) return std::nullopt;
 
@@ -89,8 +114,18 @@ std::optional<SupportPolygon> SupportPolygon::fromPlanePoints(const Cloud& cloud
   std::vector<pcl::PointIndices> groups;
   clustering.extract(groups);  // largest first
   if (groups.empty()) return std::nullopt;
+  // The strip a wall leaves on the plane joins the table's points (a wall a few centimetres behind
+  // the table) and would stretch the polygon along the wall, over whatever stands beside the
+  // table. It keeps the group together but gives no extent; the table's own points do.
+  const std::vector<bool> crossing = seenUnder(on_plane, under_plane);
   auto table = std::make_shared<FlatCloud>();
-  for (int index : groups.front().indices) table->push_back(on_plane->points[index]);
+  for (int index : groups.front().indices) {
+    if (!crossing[index]) table->push_back(on_plane->points[index]);
+  }
+  if (table->size() < 3) {  // nothing but crossings: the group as it is
+    table->clear();
+    for (int index : groups.front().indices) table->push_back(on_plane->points[index]);
+  }
 
   polygon.corners_ = hull2d(table);
   if (polygon.corners_.empty()) return std::nullopt;
