@@ -20,8 +20,9 @@ constexpr int kGrowDirections = 16;
 constexpr float kMinSpan = 1e-3f;
 // A surface seen this far under a point of the plane (m), within kUnderReach of it across the
 // plane, runs on below the plane: that point is where a wall or a chair's back crosses the
-// plane, not the table, which hides what is under it. (The band starts clear of the table's
-// noise and its own underside; one or two coarse voxels across.)
+// plane, not the table, which hides what is under it from a sensor over it. (The band starts
+// clear of the table's noise and is one or two coarse voxels deep. A table's own front edge,
+// seen below its top, only takes its outermost points: the margin covers them.)
 constexpr float kUnderLow = 0.03f;
 constexpr float kUnderHigh = 0.06f;
 constexpr float kUnderReach = 0.015f;
