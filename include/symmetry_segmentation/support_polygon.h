@@ -27,6 +27,10 @@ class SupportPolygon {
   /// Whether `point` lies over (or under) the polygon, along the plane's normal.
   bool contains(const Eigen::Vector3f& point) const;
 
+  /// Whether `point` lies more than `distance` (m) outside the table's own points' polygon (the
+  /// polygon without the margin), along the plane: past one of its edges by more than that.
+  bool beyondTable(const Eigen::Vector3f& point, float distance) const;
+
   /// The corners on the plane, in order around it (input frame).
   std::vector<Eigen::Vector3f> corners() const;
 
@@ -35,7 +39,8 @@ class SupportPolygon {
 
   Eigen::Vector3f origin_ = Eigen::Vector3f::Zero();  ///< On the plane.
   Eigen::Vector3f u_ = Eigen::Vector3f::UnitX(), v_ = Eigen::Vector3f::UnitY();  ///< In-plane axes.
-  std::vector<Eigen::Vector2f> corners_;  ///< Counter-clockwise in (u, v).
+  std::vector<Eigen::Vector2f> corners_;        ///< Counter-clockwise in (u, v).
+  std::vector<Eigen::Vector2f> table_corners_;  ///< The same before the margin.
 };
 
 }  // namespace symmetry_segmentation

@@ -130,6 +130,7 @@ std::optional<SupportPolygon> SupportPolygon::fromPlanePoints(const Cloud& cloud
 
   polygon.corners_ = hull2d(table);
   if (polygon.corners_.empty()) return std::nullopt;
+  polygon.table_corners_ = polygon.corners_;
   if (margin > 0.0f) {
     auto pushed = std::make_shared<FlatCloud>();
     for (const Eigen::Vector2f& corner : polygon.corners_) {
@@ -157,6 +158,19 @@ bool SupportPolygon::contains(const Eigen::Vector3f& point) const {
     if (edge.x() * to_point.y() - edge.y() * to_point.x() < 0.0f) return false;  // right of a CCW edge
   }
   return true;
+}
+
+bool SupportPolygon::beyondTable(const Eigen::Vector3f& point, float distance) const {
+  const Eigen::Vector2f p = inPlane(point);
+  for (std::size_t i = 0; i < table_corners_.size(); ++i) {
+    const Eigen::Vector2f edge = table_corners_[(i + 1) % table_corners_.size()] - table_corners_[i];
+    const float length = edge.norm();
+    if (!(length > 0.0f)) continue;
+    const Eigen::Vector2f to_point = p - table_corners_[i];
+    // Right of a CCW edge, that far from its line: past it (convex, so outside).
+    if ((edge.y() * to_point.x() - edge.x() * to_point.y()) / length > distance) return true;
+  }
+  return false;
 }
 
 std::vector<Eigen::Vector3f> SupportPolygon::corners() const {

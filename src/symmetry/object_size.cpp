@@ -17,6 +17,7 @@
 #include "symmetry_segmentation/quantile.h"
 #include "symmetry_segmentation/symmetry/hanging_segments.h"
 #include "symmetry_segmentation/symmetry/pipeline_state.h"
+#include "symmetry_segmentation/symmetry/rising_segments.h"
 #include "symmetry_segmentation/symmetry/symmetric_graph_cut.h"
 #include "symmetry_segmentation/symmetry/table_specks.h"
 
@@ -221,14 +222,28 @@ void ObjectSizeStage::run(PipelineState& state) const {
     hanging += result ? 1 : 0;
     return result;
   };
+  const bool check_rising = params_.min_seen_below_share > 0.0f && state.prepared.has_table &&
+                            state.prepared.support_polygon && state.scene != nullptr && state.scene->cloud;
+  std::optional<BelowTableSightings> below;  // made when first asked
+  std::size_t rising = 0;
+  const auto rises = [&](const CandidateSegment& segment) {
+    if (!below) below.emplace(*state.scene->cloud, state.prepared.table_plane);
+    const bool result =
+        risesFromBelowTable(*state.cloud, segment.points, state.prepared.table_plane, state.prepared.table_margin,
+                            *state.prepared.support_polygon, *below, params_.min_seen_below_share);
+    rising += result ? 1 : 0;
+    return result;
+  };
   state.segments.erase(std::remove_if(state.segments.begin(), state.segments.end(),
                                       [&](const CandidateSegment& segment) {
                                         if (segment.points.empty()) return true;
                                         if (check_top && tableScrap(segment)) return true;
                                         if (!hasObjectSize(state.cloud, segment.points, state.up, params_, plane_distance)) return true;
+                                        if (check_rising && rises(segment)) return true;
                                         return check_hanging && hangs(segment);
                                       }),
                        state.segments.end());
+  state.count("rising", rising);
   state.count("speck_points", specks);
   state.count("thin_kept", thin_kept);
   state.count("hanging", hanging);

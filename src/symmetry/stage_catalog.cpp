@@ -90,7 +90,7 @@ const std::vector<StageInfo>& stageCatalog() {
       {"coaxial_pieces", K::SegmentRewriter, "segments sharing a vertical axis of revolution and nearly touching (a bowl's inner and outer wall) are joined",
        {P::Segments}, {},
        [](const Config& c) { return made<CoaxialPieceStage>(c.symmetry.coaxial_pieces, c.symmetry.upright, c.symmetry.filter); }},
-      {"object_size", K::SegmentRewriter, "a segment larger than a graspable object, mostly one wide plane, a scrap of the table's noise or hanging over the table is dropped; a segment sheds the table's specks first",
+      {"object_size", K::SegmentRewriter, "a segment larger than a graspable object, mostly one wide plane, a scrap of the table's noise, hanging over the table or rising from below past its edge is dropped; a segment sheds the table's specks first",
        {P::Segments}, {},
        [](const Config& c) { return made<ObjectSizeStage>(c.symmetry.object_size, c.preprocessing.voxel_size); }},
       {"dedup", K::SegmentRewriter, "of segments overlapping by most of the smaller, the cleanest boundary stays (paper)",

@@ -9,7 +9,8 @@
 // the noise's scrap has the table seen all through it. Before any test, a segment's specks of
 // that noise go (table_specks.h): pieces of it as low as a scrap, apart from the rest. Extents
 // leave out 5 % of the points at either end: a few stray points of a neighbour do not make an
-// object large.
+// object large. A segment that hangs over the table (hanging_segments.h) or rises from below it
+// past its edge (rising_segments.h) goes too.
 
 #include <cstdint>
 #include <optional>

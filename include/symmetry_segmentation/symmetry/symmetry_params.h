@@ -401,6 +401,9 @@ struct ObjectSizeParams {
   // under 0.19-1.0 of their footprint); what is seen over an occluder has the table hidden under
   // it (0-0.05 on every generated set and OSD learn).
   float min_table_seen_under_raised = 0.15f;
+  // A chair's back pushed in to the table's end: all its lowest points have a surface seen
+  // under the table's top under them; no object of any evaluation set has more than a few.
+  float min_seen_below_share = 0.5f;
 };
 
 inline void describeParameters(ParameterList<ObjectSizeParams>& list) {
@@ -415,7 +418,9 @@ inline void describeParameters(ParameterList<ObjectSizeParams>& list) {
       .add("max_table_seen_share", &P::max_table_seen_share, 0.0, 1.0, "",
            "...unless the table was seen under less than this share of its footprint's inside: a thin object lying on the table hides it, the table's noise has it all through")
       .add("min_table_seen_under_raised", &P::min_table_seen_under_raised, 0.0, 1.0, "",
-           "a segment resting on nothing (the gap under it taller than itself, nothing under its footprint) with the table seen under this share of its footprint's inside hangs over the table (a shelf): dropped; 0: off");
+           "a segment resting on nothing (the gap under it taller than itself, nothing under its footprint) with the table seen under this share of its footprint's inside hangs over the table (a shelf): dropped; 0: off")
+      .add("min_seen_below_share", &P::min_seen_below_share, 0.0, 1.0, "",
+           "a segment a quarter or more beyond the table's own points with a surface seen 3-6 cm under the table's top under this share of its lowest points rises from below past the table's edge (a chair's back, a carton beside the table): dropped; 0: off");
 }
 
 /// Stage dedup: one segment per object.
