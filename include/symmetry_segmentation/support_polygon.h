@@ -13,6 +13,12 @@
 
 namespace symmetry_segmentation {
 
+/// A surface seen this deep under the table's top (m) runs on below it: a table hides what is
+/// under its top from a sensor over it, so what is seen there is a wall, a chair's back, a
+/// table's edge. (Clear of the table's noise; one or two 1.5 cm voxels deep.)
+constexpr float kSeenUnderTopMin = 0.03f;
+constexpr float kSeenUnderTopMax = 0.06f;
+
 class SupportPolygon {
  public:
   /// The polygon of the points of `cloud` within `on_plane_distance` of `plane` (the largest

@@ -18,13 +18,10 @@ using FlatCloud = pcl::PointCloud<pcl::PointXYZ>;
 constexpr int kGrowDirections = 16;
 // Spans thinner than this (m) are a line, not an area: qhull would fail on them.
 constexpr float kMinSpan = 1e-3f;
-// A surface seen this far under a point of the plane (m), within kUnderReach of it across the
+// A surface seen under a point of the plane (kSeenUnderTop*), within kUnderReach of it across the
 // plane, runs on below the plane: that point is where a wall or a chair's back crosses the
-// plane, not the table, which hides what is under it from a sensor over it. (The band starts
-// clear of the table's noise and is one or two coarse voxels deep. A table's own front edge,
-// seen below its top, only takes its outermost points: the margin covers them.)
-constexpr float kUnderLow = 0.03f;
-constexpr float kUnderHigh = 0.06f;
+// plane, not the table. (A table's own front edge, seen below its top, only takes its outermost
+// points: the margin covers them.)
 constexpr float kUnderReach = 0.015f;
 
 bool spansAnArea(const FlatCloud& points) {
@@ -103,7 +100,9 @@ std::optional<SupportPolygon> SupportPolygon::fromPlanePoints(const Cloud& cloud
     const float height = normal.dot(point) + plane[3] / norm;
     const Eigen::Vector2f flat = polygon.inPlane(point);
     if (std::fabs(height) <= on_plane_distance) on_plane->push_back(pcl::PointXYZ(flat.x(), flat.y(), 0.0f));
-    if (height <= -kUnderLow && height >= -kUnderHigh) under_plane->push_back(pcl::PointXYZ(flat.x(), flat.y(), 0.0f));
+    if (height <= -kSeenUnderTopMin && height >= -kSeenUnderTopMax) {
+      under_plane->push_back(pcl::PointXYZ(flat.x(), flat.y(), 0.0f));
+    }
   }
   if (on_plane->size() < 3) return std::nullopt;
 

@@ -6,11 +6,6 @@
 namespace symmetry_segmentation {
 namespace {
 
-// How deep under the table's top a surface counts as running on below it (m): clear of the
-// table's noise and its own top board's thickness at the edge, within what a chair's back or a
-// carton beside the table shows under the top.
-constexpr float kBelowLow = 0.03f;
-constexpr float kBelowHigh = 0.06f;
 // Cells of the grid the sightings are kept on (m): a point's own and its eight neighbours reach
 // 1.5-3 cm across the plane, a chair's back 2 cm past the table's end and the back itself.
 constexpr float kCell = 0.015f;
@@ -33,7 +28,7 @@ BelowTableSightings::BelowTableSightings(const Cloud& input, const PlaneCoeffici
     if (!isUsablePoint(point)) continue;
     const Eigen::Vector3f p = point.getVector3fMap();
     const float height = grid_.height(p);
-    if (height <= -kBelowLow && height >= -kBelowHigh) seen_.insert(TableGrid::key(grid_.cellOf(p)));
+    if (height <= -kSeenUnderTopMin && height >= -kSeenUnderTopMax) seen_.insert(TableGrid::key(grid_.cellOf(p)));
   }
 }
 
