@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "symmetry_segmentation/occupancy.h"
 #include "symmetry_segmentation/symmetry/hanging_segments.h"
 #include "test_clouds.h"
 
@@ -89,4 +90,76 @@ TEST(HangingSegments, AShelfRestsOnNothingObjectsOnTheTableOrOnEachOtherDo) {
   EXPECT_FALSE(ss::restsOnNothing(cloud, {}, kTable, kMargin, kCell));
   EXPECT_FALSE(ss::restsOnNothing(cloud, shelf, ss::PlaneCoefficients::Zero(), kMargin, kCell));
   EXPECT_FALSE(ss::restsOnNothing(cloud, {-1, static_cast<int>(cloud.size())}, kTable, kMargin, kCell));
+}
+
+namespace {
+
+constexpr float kCameraY = -1.0f, kCameraZ = 0.2f;
+
+/// A board 36 cm over the table (20 x 15 cm) and, 10 cm behind it, a wall; what a camera 1 m in
+/// front of the board and 20 cm over the table sees of them: it looks under the board to the
+/// wall (the table under the board it sees too: left out, as if the board shaded it). With
+/// `occluder`, a box 34 cm tall stands between the camera and the space under the board.
+/// Returns the board's indices.
+std::vector<int> boardScene(ss::Cloud& cloud, bool occluder) {
+  const Eigen::Vector3f camera(0.0f, kCameraY, kCameraZ);
+  const Eigen::AlignedBox3f board_box(Eigen::Vector3f(-0.105f, -0.005f, 0.355f), Eigen::Vector3f(0.105f, 0.155f, 0.365f));
+  const Eigen::AlignedBox3f front_box(Eigen::Vector3f(-0.15f, -0.105f, 0.0f), Eigen::Vector3f(0.15f, -0.095f, 0.34f));
+  const auto add = [&](float x, float y, float z) {
+    const Eigen::Vector3f p(x, y, z);
+    if (test_clouds::segmentCrossesBox(camera, p, board_box) && !board_box.contains(p)) return;
+    if (occluder && test_clouds::segmentCrossesBox(camera, p, front_box) && !front_box.contains(p)) return;
+    ss::PointT q;
+    q.x = x; q.y = y; q.z = z;
+    cloud.push_back(q);
+  };
+  for (float x = -0.3f; x <= 0.3f + 1e-4f; x += 0.01f) {
+    for (float y = -0.4f; y <= 0.25f + 1e-4f; y += 0.01f) {
+      if (!(x > -0.11f && x < 0.11f && y > -0.01f && y < 0.16f)) add(x, y, 0.0f);
+    }
+    for (float z = 0.01f; z <= 0.6f + 1e-4f; z += 0.01f) add(x, 0.25f, z);
+  }
+  if (occluder) {
+    for (float x = -0.15f; x <= 0.15f + 1e-4f; x += 0.01f) {
+      for (float z = 0.01f; z <= 0.34f + 1e-4f; z += 0.01f) add(x, -0.1f, z);
+    }
+  }
+  std::vector<int> board;
+  for (float x = -0.1f; x <= 0.1f + 1e-4f; x += 0.01f) {
+    for (float y = 0.0f; y <= 0.15f + 1e-4f; y += 0.01f) {
+      board.push_back(static_cast<int>(cloud.size()));
+      add(x, y, 0.36f);
+    }
+  }
+  return board;
+}
+
+}  // namespace
+
+TEST(FreeShareUnder, TheSpaceUnderAShelfIsSeenEmptyWhatIsOverAnOccluderHasItHidden) {
+  const Eigen::Vector3f camera(0.0f, kCameraY, kCameraZ);
+  ss::Cloud open;
+  const std::vector<int> board = boardScene(open, false);
+  ASSERT_TRUE(ss::restsOnNothing(open, board, kTable, kMargin, kCell));
+  const auto seen_free = ss::freeShareUnder(open, board, kTable, kMargin, ss::OccupancyMap::fromRayCasting(open, {camera}));
+  ASSERT_TRUE(seen_free.has_value());
+  EXPECT_GT(*seen_free, 0.5f);
+
+  ss::Cloud hidden;
+  const std::vector<int> over_occluder = boardScene(hidden, true);
+  const auto behind =
+      ss::freeShareUnder(hidden, over_occluder, kTable, kMargin, ss::OccupancyMap::fromRayCasting(hidden, {camera}));
+  ASSERT_TRUE(behind.has_value());
+  EXPECT_LT(*behind, 0.5f);
+
+  // No room for a probe under a segment 3 cm over the table.
+  ss::Cloud low;
+  std::vector<int> slab;
+  for (float x = 0.0f; x <= 0.05f; x += 0.01f) {
+    ss::PointT p;
+    p.x = x; p.y = 0.0f; p.z = 0.03f;
+    slab.push_back(static_cast<int>(low.size()));
+    low.push_back(p);
+  }
+  EXPECT_FALSE(ss::freeShareUnder(low, slab, kTable, kMargin, ss::OccupancyMap::fromRayCasting(low, {camera})));
 }

@@ -6,7 +6,9 @@
 #include <optional>
 #include <unordered_set>
 
+#include "symmetry_segmentation/occupancy.h"
 #include "symmetry_segmentation/point_validity.h"
+#include "symmetry_segmentation/quantile.h"
 #include "symmetry_segmentation/raised_off_table.h"
 #include "symmetry_segmentation/table_grid.h"
 
@@ -18,6 +20,12 @@ constexpr float kMinGapCells = 3.0f;
 // A point of anything else from one to this many cells under the base, over the footprint, may
 // be what the segment rests on.
 constexpr float kHoldingCells = 5.0f;
+// Probes under a segment: clear of the table's noise and of the segment's own base (m), this far
+// apart up the column.
+constexpr float kProbeClearance = 0.02f;
+constexpr float kProbeStep = 0.03f;
+// A segment's base: this quantile of its heights (raised_off_table.cpp's too).
+constexpr float kBaseQuantile = 0.02f;
 
 }  // namespace
 
@@ -53,6 +61,34 @@ bool restsOnNothing(const Cloud& cloud, const std::vector<int>& points, const Pl
     if (!std::binary_search(usable.begin(), usable.end(), static_cast<int>(j))) return false;
   }
   return true;
+}
+
+std::optional<float> freeShareUnder(const Cloud& cloud, const std::vector<int>& points,
+                                    const PlaneCoefficients& table_plane, float table_margin,
+                                    const OccupancyMap& occupancy) {
+  if (!(table_plane.head<3>().norm() > 0.0f)) return std::nullopt;
+  const TableGrid grid(table_plane, 1.0f);
+  const Eigen::Vector3f up = table_plane.head<3>().normalized();
+  std::vector<int> usable;
+  std::vector<float> heights;
+  for (int i : points) {
+    if (i < 0 || static_cast<std::size_t>(i) >= cloud.size() || !isUsablePoint(cloud[i])) continue;
+    usable.push_back(i);
+    heights.push_back(grid.height(cloud[i].getVector3fMap()));
+  }
+  if (usable.empty()) return std::nullopt;
+  std::vector<float> reordered = heights;  // quantileOf reorders what it is given
+  const float top = quantileOf(reordered, kBaseQuantile) - kProbeClearance;
+  std::size_t probes = 0, free = 0;
+  for (std::size_t k = 0; k < usable.size(); ++k) {
+    const Eigen::Vector3f p = cloud[usable[k]].getVector3fMap();
+    for (float z = table_margin + kProbeClearance; z < top; z += kProbeStep) {
+      ++probes;
+      free += occupancy.classify(p - (heights[k] - z) * up) == Occupancy::Free ? 1 : 0;
+    }
+  }
+  if (probes == 0) return std::nullopt;
+  return static_cast<float>(free) / static_cast<float>(probes);
 }
 
 }  // namespace symmetry_segmentation

@@ -208,7 +208,8 @@ void ObjectSizeStage::run(PipelineState& state) const {
       segment.points = std::move(kept);
     }
   }
-  const bool check_hanging = params_.min_table_seen_under_raised > 0.0f && state.prepared.has_table &&
+  const bool check_hanging = (params_.min_table_seen_under_raised > 0.0f || params_.min_free_under_raised > 0.0f) &&
+                             state.prepared.has_table &&
                              state.scene != nullptr && state.scene->cloud;
   std::size_t hanging = 0;
   const auto hangs = [&](const CandidateSegment& segment) {
@@ -216,9 +217,18 @@ void ObjectSizeStage::run(PipelineState& state) const {
                         voxel_size_)) {
       return false;
     }
-    // Under an object seen over another in front of it the table is hidden; under a shelf, seen.
-    const std::optional<float> seen = tableSeen().seenShareUnder(*state.cloud, segment.points);
-    const bool result = seen && *seen >= params_.min_table_seen_under_raised;
+    // Under an object seen over another in front of it the table is hidden, and so is the space
+    // over the table; under a shelf the table is seen, or the space under it seen empty.
+    bool result = false;
+    if (params_.min_table_seen_under_raised > 0.0f) {
+      const std::optional<float> seen = tableSeen().seenShareUnder(*state.cloud, segment.points);
+      result = seen && *seen >= params_.min_table_seen_under_raised;
+    }
+    if (!result && params_.min_free_under_raised > 0.0f && state.occupancy) {
+      const std::optional<float> free = freeShareUnder(*state.cloud, segment.points, state.prepared.table_plane,
+                                                       state.prepared.table_margin, *state.occupancy);
+      result = free && *free >= params_.min_free_under_raised;
+    }
     hanging += result ? 1 : 0;
     return result;
   };

@@ -401,6 +401,9 @@ struct ObjectSizeParams {
   // under 0.19-1.0 of their footprint); what is seen over an occluder has the table hidden under
   // it (0-0.05 on every generated set and OSD learn).
   float min_table_seen_under_raised = 0.15f;
+  // ...or the space under it seen free: 0.9-1.0 under shelf boards and a mug's handle found
+  // alone, 0-0.03 under what is seen over an occluder (every evaluation set and OSD learn).
+  float min_free_under_raised = 0.5f;
   // A chair's back pushed in to the table's end: all its lowest points have a surface seen
   // under the table's top under them; no object of any evaluation set has more than a few.
   float min_seen_below_share = 0.5f;
@@ -419,6 +422,8 @@ inline void describeParameters(ParameterList<ObjectSizeParams>& list) {
            "...unless the table was seen under less than this share of its footprint's inside: a thin object lying on the table hides it, the table's noise has it all through")
       .add("min_table_seen_under_raised", &P::min_table_seen_under_raised, 0.0, 1.0, "",
            "a segment resting on nothing (the gap under it taller than itself, nothing under its footprint) with the table seen under this share of its footprint's inside hangs over the table (a shelf): dropped; 0: off")
+      .add("min_free_under_raised", &P::min_free_under_raised, 0.0, 1.0, "",
+           "...as does one with the space under it seen free (occupancy) at this share of probes every 3 cm straight under it (a shelf shading the table under it); what is seen over an occluder has that space hidden; 0: off")
       .add("min_seen_below_share", &P::min_seen_below_share, 0.0, 1.0, "",
            "a segment a quarter or more beyond the table's own points with a surface seen 3-6 cm under the table's top under this share of its lowest points rises from below past the table's edge (a chair's back, a carton beside the table): dropped; 0: off");
 }
