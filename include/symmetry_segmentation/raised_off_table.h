@@ -10,6 +10,10 @@
 
 namespace symmetry_segmentation {
 
+/// The base of a segment whose points' heights over the table are `heights` (reordered; not
+/// empty): their 2nd percentile, a few strays of a neighbour aside.
+float segmentBase(std::vector<float>& heights);
+
 /// `heights`: the segment's points' heights over the table (reordered; values that are not
 /// finite are dropped from it). Its base and top are
 /// their 2nd and 98th percentiles (a few strays of a neighbour aside). The base when the gap

@@ -33,15 +33,16 @@ class SupportPolygon {
   /// Whether `point` lies over (or under) the polygon, along the plane's normal.
   bool contains(const Eigen::Vector3f& point) const;
 
-  /// Whether `point` lies more than `distance` (m) outside the table's own points' polygon (the
-  /// polygon without the margin), along the plane: past one of its edges by more than that.
-  bool beyondTable(const Eigen::Vector3f& point, float distance) const;
+  /// Whether `point` lies over (or under) the table's own points' polygon: without the margin.
+  bool overTable(const Eigen::Vector3f& point) const;
 
   /// The corners on the plane, in order around it (input frame).
   std::vector<Eigen::Vector3f> corners() const;
 
  private:
   Eigen::Vector2f inPlane(const Eigen::Vector3f& point) const;
+  /// Whether `point` (in-plane) is inside the convex polygon `corners` (counter-clockwise).
+  static bool inside(const std::vector<Eigen::Vector2f>& corners, const Eigen::Vector2f& point);
 
   Eigen::Vector3f origin_ = Eigen::Vector3f::Zero();  ///< On the plane.
   Eigen::Vector3f u_ = Eigen::Vector3f::UnitX(), v_ = Eigen::Vector3f::UnitY();  ///< In-plane axes.

@@ -12,10 +12,12 @@ constexpr float kBaseQuantile = 0.02f;
 constexpr float kTopQuantile = 0.98f;
 }  // namespace
 
+float segmentBase(std::vector<float>& heights) { return quantileOf(heights, kBaseQuantile); }
+
 std::optional<float> raisedBase(std::vector<float>& heights, float table_margin, float min_gap) {
   heights.erase(std::remove_if(heights.begin(), heights.end(), [](float h) { return !std::isfinite(h); }), heights.end());
   if (heights.empty()) return std::nullopt;
-  const float base = quantileOf(heights, kBaseQuantile);
+  const float base = segmentBase(heights);
   const float top = quantileOf(heights, kTopQuantile);
   const float gap = base - table_margin;
   if (!(gap > std::max(min_gap, top - base))) return std::nullopt;

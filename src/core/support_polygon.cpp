@@ -149,28 +149,18 @@ Eigen::Vector2f SupportPolygon::inPlane(const Eigen::Vector3f& point) const {
   return {u_.dot(offset), v_.dot(offset)};
 }
 
-bool SupportPolygon::contains(const Eigen::Vector3f& point) const {
-  const Eigen::Vector2f p = inPlane(point);
-  for (std::size_t i = 0; i < corners_.size(); ++i) {
-    const Eigen::Vector2f edge = corners_[(i + 1) % corners_.size()] - corners_[i];
-    const Eigen::Vector2f to_point = p - corners_[i];
+bool SupportPolygon::inside(const std::vector<Eigen::Vector2f>& corners, const Eigen::Vector2f& point) {
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    const Eigen::Vector2f edge = corners[(i + 1) % corners.size()] - corners[i];
+    const Eigen::Vector2f to_point = point - corners[i];
     if (edge.x() * to_point.y() - edge.y() * to_point.x() < 0.0f) return false;  // right of a CCW edge
   }
   return true;
 }
 
-bool SupportPolygon::beyondTable(const Eigen::Vector3f& point, float distance) const {
-  const Eigen::Vector2f p = inPlane(point);
-  for (std::size_t i = 0; i < table_corners_.size(); ++i) {
-    const Eigen::Vector2f edge = table_corners_[(i + 1) % table_corners_.size()] - table_corners_[i];
-    const float length = edge.norm();
-    if (!(length > 0.0f)) continue;
-    const Eigen::Vector2f to_point = p - table_corners_[i];
-    // Right of a CCW edge, that far from its line: past it (convex, so outside).
-    if ((edge.y() * to_point.x() - edge.x() * to_point.y()) / length > distance) return true;
-  }
-  return false;
-}
+bool SupportPolygon::contains(const Eigen::Vector3f& point) const { return inside(corners_, inPlane(point)); }
+
+bool SupportPolygon::overTable(const Eigen::Vector3f& point) const { return inside(table_corners_, inPlane(point)); }
 
 std::vector<Eigen::Vector3f> SupportPolygon::corners() const {
   std::vector<Eigen::Vector3f> result;

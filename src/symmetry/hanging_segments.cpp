@@ -8,7 +8,6 @@
 
 #include "symmetry_segmentation/occupancy.h"
 #include "symmetry_segmentation/point_validity.h"
-#include "symmetry_segmentation/quantile.h"
 #include "symmetry_segmentation/raised_off_table.h"
 #include "symmetry_segmentation/table_grid.h"
 
@@ -24,8 +23,6 @@ constexpr float kHoldingCells = 5.0f;
 // apart up the column.
 constexpr float kProbeClearance = 0.02f;
 constexpr float kProbeStep = 0.03f;
-// A segment's base: this quantile of its heights (raised_off_table.cpp's too).
-constexpr float kBaseQuantile = 0.02f;
 
 }  // namespace
 
@@ -77,8 +74,8 @@ std::optional<float> freeShareUnder(const Cloud& cloud, const std::vector<int>& 
     heights.push_back(grid.height(cloud[i].getVector3fMap()));
   }
   if (usable.empty()) return std::nullopt;
-  std::vector<float> reordered = heights;  // quantileOf reorders what it is given
-  const float top = quantileOf(reordered, kBaseQuantile) - kProbeClearance;
+  std::vector<float> reordered = heights;  // segmentBase reorders what it is given
+  const float top = segmentBase(reordered) - kProbeClearance;
   std::size_t probes = 0, free = 0;
   for (std::size_t k = 0; k < usable.size(); ++k) {
     const Eigen::Vector3f p = cloud[usable[k]].getVector3fMap();

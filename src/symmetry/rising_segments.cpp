@@ -55,7 +55,7 @@ bool risesFromBelowTable(const Cloud& cloud, const std::vector<int>& points, con
     if (i < 0 || static_cast<std::size_t>(i) >= cloud.size() || !isUsablePoint(cloud[i])) continue;
     const Eigen::Vector3f p = cloud[i].getVector3fMap();
     ++usable;
-    beyond += support.beyondTable(p, 0.0f) ? 1 : 0;
+    beyond += support.overTable(p) ? 0 : 1;
     if (grid.height(p) > table_margin + kLowBand) continue;
     ++low;
     low_over_below += below.seenUnder(p) ? 1 : 0;

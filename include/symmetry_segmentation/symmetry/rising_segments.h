@@ -34,7 +34,7 @@ class BelowTableSightings {
 };
 
 /// Whether `points` of `cloud` rise from below the table past its edge (see above): a quarter of
-/// them at least lie beyond `support`'s table points (SupportPolygon::beyondTable), and of their
+/// them at least lie beyond `support`'s table points (not SupportPolygon::overTable), and of their
 /// points within 2 cm over `table_margin` (at least 5), `min_seen_below_share` at least have a
 /// surface of `below` under them. Never with `min_seen_below_share` 0.
 bool risesFromBelowTable(const Cloud& cloud, const std::vector<int>& points, const PlaneCoefficients& table_plane,
