@@ -196,6 +196,26 @@ TEST(ColorSeams, BoxesOfOneDepthPushedIntoARowAreSeparateObjects) {
   EXPECT_EQ(segments[1].points, pointsOfColor(cloud, kBlue));
 }
 
+TEST(ColorSeams, FlushBoxesOfOneHeightInARowAreSeparateObjects) {
+  // Three boxes of one depth and height pushed into a row: no crease between them, and the
+  // row's plane (the middle box's) mirrors each end box onto the other. Each end box mirrors
+  // onto itself about its own middle, halfway between its seam and its far face.
+  const Rgb yellow{{210, 170, 30}};
+  const ss::Cloud cloud = boxSurfaces({Box{{-0.11f, -0.04f, 0.0f}, {-0.05f, 0.04f, 0.1f}, kRed},
+                                       Box{{-0.05f, -0.04f, 0.0f}, {0.05f, 0.04f, 0.1f}, kBlue},
+                                       Box{{0.05f, -0.04f, 0.0f}, {0.11f, 0.04f, 0.1f}, yellow}});
+  std::vector<ss::CandidateSegment> segments = {everything(cloud, kAcross)};
+  EXPECT_EQ(split(segments, cloud), 1u);
+  ASSERT_EQ(segments.size(), 3u);
+  std::vector<std::vector<int>> parts;
+  for (const auto& segment : segments) parts.push_back(segment.points);
+  std::sort(parts.begin(), parts.end());
+  std::vector<std::vector<int>> expected = {pointsOfColor(cloud, kRed), pointsOfColor(cloud, kBlue),
+                                            pointsOfColor(cloud, yellow)};
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(parts, expected);
+}
+
 TEST(ColorSeams, ALidColouredApartAtTheRimStaysWithItsBox) {
   // The colour edge follows the box's convex top edge: one object made of two parts.
   ss::Cloud cloud = boxSurfaces({Box{{-0.05f, -0.04f, 0.0f}, {0.05f, 0.04f, 0.12f}, kRed}});

@@ -12,6 +12,7 @@
 
 #include "color_lab.h"
 #include "disjoint_sets.h"
+#include "symmetry_segmentation/quantile.h"
 #include "symmetry_segmentation/symmetry/object_size.h"
 #include "symmetry_segmentation/symmetry/pipeline_state.h"
 #include "symmetry_segmentation/symmetry/smoothness_weight.h"
@@ -19,6 +20,11 @@
 
 namespace symmetry_segmentation {
 namespace {
+
+// A seam whose second axis is at least this share of its first (in extent) has a plane of its own.
+constexpr float kPlanarSeamRatio = 0.25f;
+// A part's far end from its seam: a high quantile, not the farthest point (a speck of noise).
+constexpr float kFarEndQuantile = 0.98f;
 
 // The colour parts of a segment: per position its part, numbered from 0, the uniform parts
 // first. Empty unless there are two or more and together they cover most of the segment.
@@ -145,18 +151,59 @@ bool seamSpansBoth(const std::vector<int>& ends, const std::vector<int>& points,
   return false;
 }
 
-// Whether most of `piece`'s matched reflections about `plane` land on `piece` itself.
-bool mirroredOntoItself(const std::vector<int>& piece, const SymmetryPlane& plane, const SceneEvidence& evidence,
-                        const ColorSeamParams& params) {
+// Whether most of `piece`'s matched reflections about `plane` land on `target` (sorted).
+bool mirroredOnto(const std::vector<int>& piece, const std::vector<int>& target, const SymmetryPlane& plane,
+                  const SceneEvidence& evidence, const ColorSeamParams& params) {
   int matched = 0;
-  int onto_itself = 0;
+  int onto_target = 0;
   for (int p : piece) {
     const int q = evidence.match(p, plane);
     if (q < 0) continue;
     ++matched;
-    onto_itself += contains(piece, q) ? 1 : 0;
+    onto_target += contains(target, q) ? 1 : 0;
   }
-  return matched >= params.min_seam_links && onto_itself >= params.min_self_mirrored_fraction * matched;
+  return matched >= params.min_seam_links && onto_target >= params.min_self_mirrored_fraction * matched;
+}
+
+bool mirroredOntoItself(const std::vector<int>& piece, const SymmetryPlane& plane, const SceneEvidence& evidence,
+                        const ColorSeamParams& params) {
+  return mirroredOnto(piece, piece, plane, evidence, params);
+}
+
+// The plane parallel to a seam halfway between the seam and the far end of part `a` (its own
+// points' positions `of_a`): where a box's middle is when the seam is one of its faces (boxes
+// in a row, a box on a box). Across the seam: the normal of the seam's plane, or for a seam seen
+// as one line, the way from `b` to `a` square to that line.
+SymmetryPlane seamMidPlane(const std::vector<int>& ends, const std::vector<int>& of_a, const std::vector<int>& of_b,
+                           const std::vector<int>& points, const Cloud& cloud) {
+  const auto mean_of = [&](const std::vector<int>& positions) {
+    Eigen::Vector3f mean = Eigen::Vector3f::Zero();
+    for (int j : positions) mean += cloud[points[j]].getVector3fMap();
+    return Eigen::Vector3f(mean / static_cast<float>(positions.size()));
+  };
+  const Eigen::Vector3f seam_mean = mean_of(ends);
+  Eigen::Matrix3f scatter = Eigen::Matrix3f::Zero();
+  for (int j : ends) {
+    const Eigen::Vector3f d = cloud[points[j]].getVector3fMap() - seam_mean;
+    scatter += d * d.transpose();
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3f> axes(scatter);
+  const Eigen::Vector3f along = axes.eigenvectors().col(2);
+  Eigen::Vector3f across = mean_of(of_a) - mean_of(of_b);
+  // A seam of two strokes (over a box's top and down its front) has a plane of its own.
+  if (axes.eigenvalues()(1) > kPlanarSeamRatio * kPlanarSeamRatio * axes.eigenvalues()(2)) {
+    across = axes.eigenvectors().col(0) * (axes.eigenvectors().col(0).dot(across) < 0.0f ? -1.0f : 1.0f);
+  } else {
+    across -= across.dot(along) * along;
+  }
+  SymmetryPlane plane;
+  plane.normal = across.normalized();
+  std::vector<float> heights;
+  heights.reserve(of_a.size());
+  for (int j : of_a) heights.push_back(plane.normal.dot(cloud[points[j]].getVector3fMap()));
+  const float far = quantileOf(heights, kFarEndQuantile);
+  plane.distance = -0.5f * (plane.normal.dot(seam_mean) + far);
+  return plane;
 }
 
 // Whether a colour part is an object of its own: a plane mirrors most of its matched reflections
@@ -164,11 +211,15 @@ bool mirroredOntoItself(const std::vector<int>& piece, const SymmetryPlane& plan
 // print patch or a handle's colour mirrors onto the rest of its object or nowhere), and it is
 // more than one flat face (any plane across a face mirrors it onto itself, and a box's face in
 // another print is no object).
-bool standsAlone(const std::vector<int>& piece, const SymmetryPlane& plane, const std::vector<CandidateSegment>& found,
-                 const SceneEvidence& evidence, const ColorSeamParams& params) {
-  // The segment's plane, or that of a found segment covering a good share of the piece (a stack
-  // of two boxes may come with the horizontal plane that mirrors one box onto the other).
-  bool mirrored = mirroredOntoItself(piece, plane, evidence, params);
+bool standsAlone(const std::vector<int>& piece, const std::vector<SymmetryPlane>& planes,
+                 const std::vector<CandidateSegment>& found, const SceneEvidence& evidence,
+                 const ColorSeamParams& params) {
+  // The segment's plane (or others given), or that of a found segment covering a good share of
+  // the piece (a stack of two boxes may come with the horizontal plane that mirrors one box onto
+  // the other).
+  bool mirrored = std::any_of(planes.begin(), planes.end(), [&](const SymmetryPlane& plane) {
+    return mirroredOntoItself(piece, plane, evidence, params);
+  });
   for (std::size_t i = 0; i < found.size() && !mirrored; ++i) {
     if (found[i].points.empty() || intersectionSize(found[i].points, piece) < params.min_plane_share * piece.size()) {
       continue;
@@ -220,8 +271,19 @@ int objectsAtColorSeams(const std::vector<int>& points, const std::vector<Eigen:
   for (std::size_t j = 0; j < points.size(); ++j) pieces[part[j]].push_back(points[j]);
   std::vector<int> alone(count, -1);  // standsAlone per part, computed when first asked
   const auto stands_alone = [&](int a) {
-    if (alone[a] < 0) alone[a] = standsAlone(pieces[a], plane, found, evidence, params) ? 1 : 0;
+    if (alone[a] < 0) alone[a] = standsAlone(pieces[a], {plane}, found, evidence, params) ? 1 : 0;
     return alone[a] == 1;
+  };
+  std::vector<std::vector<int>> positions(count);  // per part, its positions in `points`
+  for (std::size_t j = 0; j < points.size(); ++j) positions[part[j]].push_back(static_cast<int>(j));
+  // A box at the end of a flush row mirrors onto itself about its own middle, where the
+  // segment's plane (the middle box's) mirrors it elsewhere. Not where that plane mirrors it onto
+  // the part across the seam: one object printed in two colours either side of its plane.
+  const auto stands_alone_at = [&](const Seam& seam, int a, int b) {
+    if (stands_alone(a)) return true;
+    if (mirroredOnto(pieces[a], pieces[b], plane, evidence, params)) return false;
+    return standsAlone(pieces[a], {seamMidPlane(seam.ends, positions[a], positions[b], points, cloud)}, found,
+                       evidence, params);
   };
   const auto large_or_alone = [&](int a) {
     return pieces[a].size() >= params.min_touching_part_fraction * points.size() || stands_alone(a);
@@ -238,7 +300,8 @@ int objectsAtColorSeams(const std::vector<int>& points, const std::vector<Eigen:
     const bool flat = params.split_flush_seams && uniform && seam.flat_links >= params.min_seam_links &&
                       seam.flat_links >= params.min_flat_seam_fraction * (seam.flat_links + seam.convex_links);
     if (touching || (flat && seamSpansBoth(seam.ends, points, part, pair.first, pair.second, cloud, params.min_seam_span) &&
-                     stands_alone(pair.first) && stands_alone(pair.second))) {
+                     stands_alone_at(seam, pair.first, pair.second) &&
+                     stands_alone_at(seam, pair.second, pair.first))) {
       between_objects.push_back(pair);
     } else {
       objects.unite(pair.first, pair.second);

@@ -8,7 +8,10 @@
 // others at concave creases only. A part much smaller than the rest (a small box beside a large
 // one, or a handle) counts only when it stands alone: mirrored onto itself by the segment's
 // plane, and more than one flat face. Flat seams (flush boxes of one depth, a box on a box of
-// its footprint) split only between uniform parts that each stand alone: on real frames a flat
+// its footprint) split only between uniform parts that each stand alone - at such a seam also
+// about the part's own middle, halfway from the seam to its far end (the end box of a flush
+// row), unless the segment's plane mirrors it onto the part across the seam (one object in two
+// colours either side of its plane looks just like that). On real frames a flat
 // colour seam is far more often one object printed in two colours (OSD learn: split at every
 // flat seam, 12 of 45 frames lost an object and none gained one; split between parts that stand
 // alone, none changes). Needs colour.
