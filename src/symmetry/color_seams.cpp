@@ -109,29 +109,39 @@ ColorParts colorParts(const std::vector<int>& points, const std::vector<Eigen::V
   return parts;
 }
 
-// Whether a seam runs right across both parts it divides: in some direction within the seam's
-// plane it spans most of each part's extent. Where a box stands on a box of its footprint the
-// seam is the whole footprint's outline; between boxes of one depth in a row it runs from the
-// front to the back; the colour edge round a bottle's cap is a ring much narrower than the bottle.
-bool seamSpansBoth(const std::vector<int>& ends, const std::vector<int>& points, const std::vector<int>& part,
-                   int a, int b, const Cloud& cloud, float min_span) {
-  Eigen::Vector3f mean = Eigen::Vector3f::Zero();
-  for (int j : ends) mean += cloud[points[j]].getVector3fMap();
-  mean /= static_cast<float>(ends.size());
+// Where a seam lies: the mean of its links' ends and their principal axes (eigenvalues
+// ascending: the last two axes span the seam's plane, the first is its normal).
+struct SeamShape {
+  Eigen::Vector3f mean;
+  Eigen::Matrix3f axes;
+  Eigen::Vector3f spread;
+};
+
+SeamShape seamShape(const std::vector<int>& ends, const std::vector<int>& points, const Cloud& cloud) {
+  SeamShape shape;
+  shape.mean = Eigen::Vector3f::Zero();
+  for (int j : ends) shape.mean += cloud[points[j]].getVector3fMap();
+  shape.mean /= static_cast<float>(ends.size());
   Eigen::Matrix3f scatter = Eigen::Matrix3f::Zero();
   for (int j : ends) {
-    const Eigen::Vector3f d = cloud[points[j]].getVector3fMap() - mean;
+    const Eigen::Vector3f d = cloud[points[j]].getVector3fMap() - shape.mean;
     scatter += d * d.transpose();
   }
-  // Eigenvalues ascending: the last two axes span the seam's plane.
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3f> axes(scatter);
-  const Eigen::Vector3f first = axes.eigenvectors().col(2);
-  const Eigen::Vector3f second = axes.eigenvectors().col(1);
-  std::vector<int> of_a, of_b;
-  for (std::size_t j = 0; j < points.size(); ++j) {
-    if (part[j] == a) of_a.push_back(static_cast<int>(j));
-    if (part[j] == b) of_b.push_back(static_cast<int>(j));
-  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3f> solver(scatter);
+  shape.axes = solver.eigenvectors();
+  shape.spread = solver.eigenvalues();
+  return shape;
+}
+
+// Whether a seam runs right across both parts it divides (their positions in `points`: `of_a`,
+// `of_b`): in some direction within the seam's plane it spans most of each part's extent. Where
+// a box stands on a box of its footprint the seam is the whole footprint's outline; between
+// boxes of one depth in a row it runs from the front to the back; the colour edge round a
+// bottle's cap is a ring much narrower than the bottle.
+bool seamSpansBoth(const std::vector<int>& ends, const SeamShape& shape, const std::vector<int>& of_a,
+                   const std::vector<int>& of_b, const std::vector<int>& points, const Cloud& cloud, float min_span) {
+  const Eigen::Vector3f first = shape.axes.col(2);
+  const Eigen::Vector3f second = shape.axes.col(1);
   auto extent = [&](const std::vector<int>& positions, const Eigen::Vector3f& direction) {
     float low = std::numeric_limits<float>::max(), high = std::numeric_limits<float>::lowest();
     for (int j : positions) {
@@ -174,25 +184,18 @@ bool mirroredOntoItself(const std::vector<int>& piece, const SymmetryPlane& plan
 // points' positions `of_a`): where a box's middle is when the seam is one of its faces (boxes
 // in a row, a box on a box). Across the seam: the normal of the seam's plane, or for a seam seen
 // as one line, the way from `b` to `a` square to that line.
-SymmetryPlane seamMidPlane(const std::vector<int>& ends, const std::vector<int>& of_a, const std::vector<int>& of_b,
+SymmetryPlane seamMidPlane(const SeamShape& seam, const std::vector<int>& of_a, const std::vector<int>& of_b,
                            const std::vector<int>& points, const Cloud& cloud) {
   const auto mean_of = [&](const std::vector<int>& positions) {
     Eigen::Vector3f mean = Eigen::Vector3f::Zero();
     for (int j : positions) mean += cloud[points[j]].getVector3fMap();
     return Eigen::Vector3f(mean / static_cast<float>(positions.size()));
   };
-  const Eigen::Vector3f seam_mean = mean_of(ends);
-  Eigen::Matrix3f scatter = Eigen::Matrix3f::Zero();
-  for (int j : ends) {
-    const Eigen::Vector3f d = cloud[points[j]].getVector3fMap() - seam_mean;
-    scatter += d * d.transpose();
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3f> axes(scatter);
-  const Eigen::Vector3f along = axes.eigenvectors().col(2);
+  const Eigen::Vector3f along = seam.axes.col(2);
   Eigen::Vector3f across = mean_of(of_a) - mean_of(of_b);
   // A seam of two strokes (over a box's top and down its front) has a plane of its own.
-  if (axes.eigenvalues()(1) > kPlanarSeamRatio * kPlanarSeamRatio * axes.eigenvalues()(2)) {
-    across = axes.eigenvectors().col(0) * (axes.eigenvectors().col(0).dot(across) < 0.0f ? -1.0f : 1.0f);
+  if (seam.spread(1) > kPlanarSeamRatio * kPlanarSeamRatio * seam.spread(2)) {
+    across = seam.axes.col(0) * (seam.axes.col(0).dot(across) < 0.0f ? -1.0f : 1.0f);
   } else {
     across -= across.dot(along) * along;
   }
@@ -202,7 +205,7 @@ SymmetryPlane seamMidPlane(const std::vector<int>& ends, const std::vector<int>&
   heights.reserve(of_a.size());
   for (int j : of_a) heights.push_back(plane.normal.dot(cloud[points[j]].getVector3fMap()));
   const float far = quantileOf(heights, kFarEndQuantile);
-  plane.distance = -0.5f * (plane.normal.dot(seam_mean) + far);
+  plane.distance = -0.5f * (plane.normal.dot(seam.mean) + far);
   return plane;
 }
 
@@ -279,11 +282,17 @@ int objectsAtColorSeams(const std::vector<int>& points, const std::vector<Eigen:
   // A box at the end of a flush row mirrors onto itself about its own middle, where the
   // segment's plane (the middle box's) mirrors it elsewhere. Not where that plane mirrors it onto
   // the part across the seam: one object printed in two colours either side of its plane.
-  const auto stands_alone_at = [&](const Seam& seam, int a, int b) {
+  const auto stands_alone_at = [&](const SeamShape& seam, int a, int b) {
     if (stands_alone(a)) return true;
     if (mirroredOnto(pieces[a], pieces[b], plane, evidence, params)) return false;
-    return standsAlone(pieces[a], {seamMidPlane(seam.ends, positions[a], positions[b], points, cloud)}, found,
-                       evidence, params);
+    return standsAlone(pieces[a], {seamMidPlane(seam, positions[a], positions[b], points, cloud)}, found, evidence,
+                       params);
+  };
+  // A flat seam parts two objects where it runs right across both and each stands alone.
+  const auto flush_objects = [&](const Seam& seam, int a, int b) {
+    const SeamShape shape = seamShape(seam.ends, points, cloud);
+    return seamSpansBoth(seam.ends, shape, positions[a], positions[b], points, cloud, params.min_seam_span) &&
+           stands_alone_at(shape, a, b) && stands_alone_at(shape, b, a);
   };
   const auto large_or_alone = [&](int a) {
     return pieces[a].size() >= params.min_touching_part_fraction * points.size() || stands_alone(a);
@@ -299,9 +308,7 @@ int objectsAtColorSeams(const std::vector<int>& points, const std::vector<Eigen:
     const bool uniform = pair.first < uniform_count && pair.second < uniform_count;
     const bool flat = params.split_flush_seams && uniform && seam.flat_links >= params.min_seam_links &&
                       seam.flat_links >= params.min_flat_seam_fraction * (seam.flat_links + seam.convex_links);
-    if (touching || (flat && seamSpansBoth(seam.ends, points, part, pair.first, pair.second, cloud, params.min_seam_span) &&
-                     stands_alone_at(seam, pair.first, pair.second) &&
-                     stands_alone_at(seam, pair.second, pair.first))) {
+    if (touching || (flat && flush_objects(seam, pair.first, pair.second))) {
       between_objects.push_back(pair);
     } else {
       objects.unite(pair.first, pair.second);
