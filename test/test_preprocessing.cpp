@@ -380,6 +380,21 @@ TEST(SupportPolygon, AWallCrossingThePlaneGivesItNoExtent) {
   EXPECT_FALSE(polygon->contains({0.8f, 0.35f, 0.1f})) << "beside the table's end, along the wall";
   EXPECT_FALSE(polygon->contains({-1.2f, 0.4f, 0.1f})) << "far along the wall";
 
+  // A chair's back leaning away from the table (1 in 2): what is seen of it 3-6 cm under the
+  // plane lies 1.5-3 cm further out than where it crosses the plane - as far as a neighbouring
+  // voxel of the coarse cloud the polygon is found in. It still runs on below the plane.
+  ss::Cloud leaning;
+  test_clouds::addTable(leaning, 0.4f, 0.015f);
+  test_clouds::addWall(leaning, 0.43f, 1.5f, -0.7f, 0.8f, 0.015f);
+  for (auto& p : leaning.points) {
+    if (p.y > 0.42f) p.y -= 0.5f * p.z;
+  }
+  const auto beside_leaning =
+      ss::SupportPolygon::fromPlanePoints(leaning, ss::PlaneCoefficients(0, 0, 1, 0), 0.01f, 0.045f, 0.05f);
+  ASSERT_TRUE(beside_leaning.has_value());
+  EXPECT_TRUE(beside_leaning->contains({0.3f, 0.3f, 0.1f})) << "over the table";
+  EXPECT_FALSE(beside_leaning->contains({0.8f, 0.35f, 0.1f})) << "beside the table's end, along the leaning back";
+
   // Seen only above the table (nothing under its strip), the wall still stretches the polygon:
   // the rule needs the surface seen going on below the plane.
   ss::Cloud above_only;
