@@ -93,3 +93,21 @@ TEST(MirrorTwins, PiecesOfOneObjectSeenAroundSomethingStayWhole) {
   EXPECT_EQ(ss::splitMirrorTwins(segments, evidence(chains(), acrossThePlane, seenThrough), params), 0u);
   EXPECT_EQ(segments.size(), 1u);
 }
+
+TEST(MirrorTwins, AUShapeWhoseBaseMirrorsOntoItselfStaysWhole) {
+  // A U lying open to the sensor: one upright (points 0-3) apart from the base and the other
+  // upright (4-19) over the links, the free space between the uprights seen through. The uprights
+  // mirror onto each other, but the base mirrors onto itself: one object's plane, not the plane
+  // between two.
+  std::vector<std::vector<int>> links(20);
+  for (int i = 0; i < 20; ++i) {
+    if (i != 0 && i != 4) links[i].push_back(i - 1);
+    if (i != 3 && i != 19) links[i].push_back(i + 1);
+  }
+  ss::MirrorTwinParams params;
+  params.min_pairs = 5;
+  params.min_part_fraction = 0.15f;
+  std::vector<ss::CandidateSegment> segments = {wholeSegment()};
+  EXPECT_EQ(ss::splitMirrorTwins(segments, evidence(links, acrossThePlane, seenThrough), params), 0u);
+  EXPECT_EQ(segments.size(), 1u);
+}

@@ -55,17 +55,23 @@ std::vector<std::vector<int>> twinPieces(const CandidateSegment& segment, const 
   }
   if (parts < 2) return {};
 
-  int pairs = 0, free_pairs = 0;
+  int pairs = 0, free_pairs = 0, self_pairs = 0;
   for (std::size_t k = 0; k < points.size(); ++k) {
     if (part[piece[k]] < 0) continue;
     const int q = evidence.match(points[k], segment.plane);
     const int j = q < 0 ? -1 : positionIn(points, q);
-    if (j < 0 || part[piece[j]] < 0 || part[piece[j]] == part[piece[k]]) continue;
+    if (j < 0 || part[piece[j]] < 0) continue;
+    if (part[piece[j]] == part[piece[k]]) {
+      ++self_pairs;
+      continue;
+    }
     ++pairs;
     const Eigen::Vector3f middle = 0.5f * (cloud[points[k]].getVector3fMap() + cloud[q].getVector3fMap());
     free_pairs += evidence.observedFree(middle) ? 1 : 0;
   }
-  if (pairs < params.min_pairs || free_pairs < params.min_free_fraction * pairs) return {};
+  // Two objects mirror onto each other about the plane between them, never onto themselves; a
+  // U's uprights do, but its base mirrors onto itself.
+  if (pairs < params.min_pairs || free_pairs < params.min_free_fraction * pairs || self_pairs >= pairs) return {};
 
   // Small pieces join the part they have most links to; unlinked ones the largest part.
   int largest = 0;
