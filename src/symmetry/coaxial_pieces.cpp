@@ -12,9 +12,11 @@
 
 #include "symmetry_segmentation/quantile.h"
 #include "symmetry_segmentation/symmetry/duplicate_segments.h"
+#include "symmetry_segmentation/symmetry/handle_pieces.h"
 #include "symmetry_segmentation/symmetry/pipeline_state.h"
 #include "symmetry_segmentation/symmetry/scene_evidence.h"
 #include "symmetry_segmentation/symmetry/segment_filter.h"
+#include "symmetry_segmentation/symmetry/sorted_indices.h"
 #include "symmetry_segmentation/symmetry/upright_hypotheses.h"
 
 namespace symmetry_segmentation {
@@ -85,6 +87,24 @@ float heightOverlap(const Cloud& cloud, const std::vector<int>& first, const std
   return rangeOverlap(heightRange(cloud, first, up), heightRange(cloud, second, up));
 }
 
+namespace {
+
+// The island (sorted indices) holding most of `points`, if any holds one.
+const std::vector<int>* islandHolding(const std::vector<std::vector<int>>& islands, const std::vector<int>& points) {
+  const std::vector<int>* best = nullptr;
+  std::size_t most = 0;
+  for (const std::vector<int>& island : islands) {
+    const std::size_t shared = intersectionSize(island, points);
+    if (shared > most) {
+      most = shared;
+      best = &island;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
 void CoaxialPieceStage::run(PipelineState& state) const {
   std::size_t joined = 0;
   if (!state.up) {
@@ -150,7 +170,26 @@ void CoaxialPieceStage::run(PipelineState& state) const {
       if (passesFilterAfterOffsetFit(joint, *state.evidence, filter_)) unions.push_back(std::move(joint));
     }
   }
-  joined = unions.size();
+  // A handle: a piece of the body's island beside it (handle_pieces.h).
+  std::size_t handles = 0;
+  if (params_.max_handle_share > 0.0f) {
+    for (std::size_t s = 0; s < state.segments.size(); ++s) {
+      if (same_points[s] != s || !passesFilter(state.segments[s], filter_)) continue;
+      const std::optional<Eigen::Vector3f>& axis = axisOf(s);
+      if (!axis) continue;
+      const std::vector<int>* island = islandHolding(state.islands, state.segments[s].points);
+      if (island == nullptr) continue;
+      for (CandidateSegment& joint :
+           bodiesWithHandles(state.segments[s], *axis, *island, *state.evidence, up, params_.max_handle_share)) {
+        if (passesFilterAfterOffsetFit(joint, *state.evidence, filter_)) {
+          unions.push_back(std::move(joint));
+          ++handles;
+        }
+      }
+    }
+  }
+  state.count("handles", handles);
+  joined = unions.size() - handles;
   for (CandidateSegment& joint : unions) state.segments.push_back(std::move(joint));
   state.count("joined", joined);
 }

@@ -87,7 +87,7 @@ const std::vector<StageInfo>& stageCatalog() {
       {"color_seams", K::SegmentRewriter, "flush objects of different colours are split at their colour seam",
        {P::Candidates, P::Segments}, {},
        [](const Config& c) { return made<ColorSeamStage>(c.symmetry.color_seams, c.symmetry.filter, c.preprocessing.voxel_size); }},
-      {"coaxial_pieces", K::SegmentRewriter, "segments sharing a vertical axis of revolution and nearly touching (a bowl's inner and outer wall) are joined",
+      {"coaxial_pieces", K::SegmentRewriter, "segments sharing a vertical axis of revolution and nearly touching (a bowl's inner and outer wall) are joined, and so is a round body's handle",
        {P::Segments}, {},
        [](const Config& c) { return made<CoaxialPieceStage>(c.symmetry.coaxial_pieces, c.symmetry.upright, c.symmetry.filter); }},
       {"object_size", K::SegmentRewriter, "a segment larger than a graspable object, mostly one wide plane, a scrap of the table's noise, hanging over the table or rising from below past its edge is dropped; a segment sheds the table's specks first",

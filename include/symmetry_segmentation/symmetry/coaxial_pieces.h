@@ -10,7 +10,8 @@
 // free space where they come closest, are joined when their union passes the filter under the
 // plane of either; dedup then prefers the union (larger at equal smoothness). Two cans one
 // behind the other have axes a diameter apart; a bowl turned over on a tin (OSD learn41) stands
-// above it; a fruit lying in a bowl is seen across free space.
+// above it; a fruit lying in a bowl is seen across free space. A round body's handle is
+// joined to it too (handle_pieces.h).
 #include <optional>
 #include <utility>
 #include <vector>

@@ -455,12 +455,14 @@ inline void describeParameters(ParameterList<StrayColorParams>& list) {
       .add("max_stray_share", &StrayColorParams::max_stray_share, 0.0, 1.0, "", "a stray piece has at most this share of its segment");
 }
 
-/// Stage coaxial_pieces: pieces of one surface of revolution seen apart are joined.
+/// Stage coaxial_pieces: pieces of one surface of revolution seen apart are joined, and so is
+/// its handle.
 struct CoaxialPieceParams {
   float max_axis_distance = 0.02f;
   float max_gap = 0.04f;
   float min_axis_share = 0.6f;
   float min_height_overlap = 0.5f;
+  float max_handle_share = 0.3f;
 };
 
 inline void describeParameters(ParameterList<CoaxialPieceParams>& list) {
@@ -471,7 +473,9 @@ inline void describeParameters(ParameterList<CoaxialPieceParams>& list) {
       .add("min_axis_share", &CoaxialPieceParams::min_axis_share, 0.0, 1.0, "",
            "a segment turns about an axis when this share of its side points' normal lines pass it (upright.max_axis_residual)")
       .add("min_height_overlap", &CoaxialPieceParams::min_height_overlap, 0.0, 1.0, "",
-           "...and the two span the same heights over this share of the shorter one's height: one object's walls, not one object on another");
+           "...and the two span the same heights over this share of the shorter one's height: one object's walls, not one object on another")
+      .add("max_handle_share", &CoaxialPieceParams::max_handle_share, 0.0, 1.0, "",
+           "a piece beside a segment turning about an axis, at most this share of it and within its heights, that the vertical plane through the axis and the piece mirrors onto itself (a handle, a spout) is joined to it; 0: never");
 }
 
 /// Stage completion: each object's unseen side from its symmetry.
