@@ -3,7 +3,10 @@
 
 #include <algorithm>
 #include <iterator>
+#include <map>
 
+#include "disjoint_sets.h"
+#include "segment_links.h"
 #include "symmetry_segmentation/symmetry/coaxial_pieces.h"
 #include "symmetry_segmentation/symmetry/sorted_indices.h"
 #include "symmetry_segmentation/symmetry/symmetry_plane.h"
@@ -20,31 +23,14 @@ constexpr float kMinOffAxis = 1e-3f;
 
 // Connected pieces of `points` (sorted) over `neighbours`, as sorted index lists.
 std::vector<std::vector<int>> linkedPieces(const std::vector<int>& points, const std::vector<std::vector<int>>& neighbours) {
-  std::vector<int> piece(points.size(), -1);
-  std::vector<std::vector<int>> pieces;
-  std::vector<std::size_t> stack;
-  for (std::size_t seed = 0; seed < points.size(); ++seed) {
-    if (piece[seed] >= 0) continue;
-    const int id = static_cast<int>(pieces.size());
-    pieces.emplace_back();
-    piece[seed] = id;
-    stack.assign(1, seed);
-    while (!stack.empty()) {
-      const std::size_t k = stack.back();
-      stack.pop_back();
-      pieces.back().push_back(points[k]);
-      const int p = points[k];
-      if (p < 0 || static_cast<std::size_t>(p) >= neighbours.size()) continue;
-      for (int q : neighbours[p]) {
-        const int j = positionIn(points, q);
-        if (j < 0 || piece[j] >= 0) continue;
-        piece[j] = id;
-        stack.push_back(static_cast<std::size_t>(j));
-      }
-    }
-    std::sort(pieces.back().begin(), pieces.back().end());
-  }
-  return pieces;
+  DisjointSets sets(points.size());
+  forEachLink(points, neighbours, [&](int j, int k) { sets.unite(j, k); });
+  std::map<int, std::vector<int>> pieces;  // by root; points in order, so each piece sorted
+  for (std::size_t j = 0; j < points.size(); ++j) pieces[sets.find(static_cast<int>(j))].push_back(points[j]);
+  std::vector<std::vector<int>> result;
+  result.reserve(pieces.size());
+  for (auto& [root, piece] : pieces) result.push_back(std::move(piece));
+  return result;
 }
 
 bool touches(const std::vector<int>& piece, const std::vector<int>& body, const std::vector<std::vector<int>>& neighbours) {
