@@ -3,9 +3,7 @@
 
 #include <algorithm>
 #include <iterator>
-#include <map>
 
-#include "disjoint_sets.h"
 #include "segment_links.h"
 #include "symmetry_segmentation/symmetry/coaxial_pieces.h"
 #include "symmetry_segmentation/symmetry/sorted_indices.h"
@@ -23,14 +21,11 @@ constexpr float kMinOffAxis = 1e-3f;
 
 // Connected pieces of `points` (sorted) over `neighbours`, as sorted index lists.
 std::vector<std::vector<int>> linkedPieces(const std::vector<int>& points, const std::vector<std::vector<int>>& neighbours) {
-  DisjointSets sets(points.size());
-  forEachLink(points, neighbours, [&](int j, int k) { sets.unite(j, k); });
-  std::map<int, std::vector<int>> pieces;  // by root; points in order, so each piece sorted
-  for (std::size_t j = 0; j < points.size(); ++j) pieces[sets.find(static_cast<int>(j))].push_back(points[j]);
-  std::vector<std::vector<int>> result;
-  result.reserve(pieces.size());
-  for (auto& [root, piece] : pieces) result.push_back(std::move(piece));
-  return result;
+  int count = 0;
+  const std::vector<int> piece = linkedPieceOf(points, neighbours, count);
+  std::vector<std::vector<int>> pieces(count);
+  for (std::size_t j = 0; j < points.size(); ++j) pieces[piece[j]].push_back(points[j]);  // in order: sorted
+  return pieces;
 }
 
 bool touches(const std::vector<int>& piece, const std::vector<int>& body, const std::vector<std::vector<int>>& neighbours) {

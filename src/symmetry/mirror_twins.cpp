@@ -4,38 +4,12 @@
 #include <algorithm>
 #include <map>
 
+#include "segment_links.h"
 #include "symmetry_segmentation/symmetry/pipeline_state.h"
 #include "symmetry_segmentation/symmetry/sorted_indices.h"
 
 namespace symmetry_segmentation {
 namespace {
-
-// Surface-connected pieces of `points` (sorted): piece index per position, and the count.
-std::vector<int> surfacePieces(const std::vector<int>& points, const std::vector<std::vector<int>>& neighbours,
-                               int& count) {
-  std::vector<int> piece(points.size(), -1);
-  count = 0;
-  std::vector<int> stack;
-  for (std::size_t seed = 0; seed < points.size(); ++seed) {
-    if (piece[seed] >= 0) continue;
-    piece[seed] = count;
-    stack.assign(1, static_cast<int>(seed));
-    while (!stack.empty()) {
-      const int k = stack.back();
-      stack.pop_back();
-      const int p = points[k];
-      if (p < 0 || static_cast<std::size_t>(p) >= neighbours.size()) continue;
-      for (int q : neighbours[p]) {
-        const int j = positionIn(points, q);
-        if (j < 0 || piece[j] >= 0) continue;
-        piece[j] = count;
-        stack.push_back(j);
-      }
-    }
-    ++count;
-  }
-  return piece;
-}
 
 // The pieces of `segment` if they are mirror twins, else nothing.
 std::vector<std::vector<int>> twinPieces(const CandidateSegment& segment, const SceneEvidence& evidence,
@@ -44,7 +18,7 @@ std::vector<std::vector<int>> twinPieces(const CandidateSegment& segment, const 
   const std::vector<std::vector<int>>& neighbours = evidence.neighbours();
   const std::vector<int>& points = segment.points;
   int count = 0;
-  const std::vector<int> piece = surfacePieces(points, neighbours, count);
+  const std::vector<int> piece = linkedPieceOf(points, neighbours, count);
   if (count < 2) return {};
   std::vector<std::size_t> sizes(count, 0);
   for (int p : piece) ++sizes[p];

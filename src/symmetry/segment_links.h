@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "disjoint_sets.h"
 #include "symmetry_segmentation/symmetry/sorted_indices.h"
 
 namespace symmetry_segmentation {
@@ -20,6 +21,23 @@ void forEachLink(const std::vector<int>& points, const std::vector<std::vector<i
       if (k >= 0) visit(static_cast<int>(j), k);
     }
   }
+}
+
+// The linked pieces of `points` (sorted working-cloud indices): the piece of each position,
+// pieces numbered in the order of their first position; `count` is set to how many there are.
+inline std::vector<int> linkedPieceOf(const std::vector<int>& points, const std::vector<std::vector<int>>& neighbours,
+                                      int& count) {
+  DisjointSets sets(points.size());
+  forEachLink(points, neighbours, [&](int j, int k) { sets.unite(j, k); });
+  std::vector<int> number(points.size(), -1);  // by root
+  std::vector<int> piece(points.size());
+  count = 0;
+  for (std::size_t j = 0; j < points.size(); ++j) {
+    const int root = sets.find(static_cast<int>(j));
+    if (number[root] < 0) number[root] = count++;
+    piece[j] = number[root];
+  }
+  return piece;
 }
 
 }  // namespace symmetry_segmentation

@@ -16,8 +16,9 @@ namespace symmetry_segmentation {
 
 /// Replaces each segment whose surface-connected pieces (over the evidence's links) include two
 /// or more large ones with observed free space between mirrored pairs across them, and fewer
-/// pairs within a piece than across (a U's base mirrors onto itself), by those pieces (smaller pieces join the large one they have most links to, else the largest), each
-/// keeping the segment's plane, scored anew. Returns how many segments were split.
+/// pairs within a piece than across (a U's base mirrors onto itself), by those pieces (smaller
+/// pieces join the large one they have most links to, else the largest), each keeping the
+/// segment's plane, scored anew. Returns how many segments were split.
 std::size_t splitMirrorTwins(std::vector<CandidateSegment>& segments, const SceneEvidence& evidence,
                              const MirrorTwinParams& params);
 
