@@ -11,6 +11,7 @@
 #include "symmetry_segmentation/scene.h"
 #include "symmetry_segmentation/segmentation_result.h"
 #include "symmetry_segmentation/support_polygon.h"
+#include "symmetry_segmentation/table_surface.h"
 
 namespace symmetry_segmentation {
 
@@ -29,6 +30,7 @@ struct PreprocessParams {
   float max_object_height = 0.5f;
   float background_extent = 0.5f;
   float max_support_tilt = 30.0f;
+  float table_surface_cell = 0.02f;
 };
 
 inline void describeParameters(ParameterList<PreprocessParams>& list) {
@@ -56,7 +58,11 @@ inline void describeParameters(ParameterList<PreprocessParams>& list) {
            "a flat patch wider than this that reaches past the table's extent is background (a wall, a shelf "
            "back, the floor), not an object; 0: keep it")
       .add("max_support_tilt", &P::max_support_tilt, 0.0, 90.0, "deg",
-           "with gravity known (scene up, node ~up_frame), the supporting plane's normal is within this angle of up");
+           "with gravity known (scene up, node ~up_frame), the supporting plane's normal is within this angle of up")
+      .add("table_surface_cell", &P::table_surface_cell, 0.0, 0.2, "m",
+           "heights are measured from the table's top fitted as a gently curved surface to the median heights of "
+           "its points in cells this wide (a fused map's drift, a far table bending away), and the plane used is "
+           "the one through those cells, whether table_plane.txt or RANSAC found the table; 0: the plane as found");
 }
 
 /// The band over the table, in table margins, where the table's cut and noise leave an object's
@@ -78,6 +84,13 @@ struct PreprocessedScene {
   /// of the distance); 0 otherwise.
   float table_range = 0.0f;
   PlaneCoefficients table_plane = PlaneCoefficients::Zero();  ///< Normal points away from the table top.
+  /// The table's top as a curved surface over table_plane, when one was fitted (table_surface_cell).
+  std::optional<TableSurface> table_surface;
+  /// Signed height of `p` over the table's top: over table_surface when fitted, else over table_plane.
+  float tableHeight(const Eigen::Vector3f& p) const {
+    if (table_surface) return table_surface->height(p);
+    return (table_plane.head<3>().dot(p) + table_plane[3]) / table_plane.head<3>().norm();
+  }
   std::optional<SupportPolygon> support_polygon;  ///< The table's extent, when cropped to it.
   Eigen::Vector3f viewpoint = Eigen::Vector3f::Zero();         ///< Used to orient normals.
   /// A camera frame without normals gets them from its pixel grid, the points dropped within

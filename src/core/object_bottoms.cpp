@@ -30,7 +30,7 @@ std::vector<std::vector<int>> objectSides(const Scene& scene, const Preprocessed
 
   // Dropped side points: within the margin of the plane on either side (the table's noise spreads
   // both ways), normal across the table.
-  auto height = [&](const PointT& p) { return (up.dot(p.getVector3fMap()) + prepared.table_plane[3]) / up_norm; };
+  auto height = [&](const PointT& p) { return prepared.tableHeight(p.getVector3fMap()); };
   auto normalOf = [&](int i) -> Eigen::Vector3f {
     if (!band_normals) return input[i].getNormalVector3fMap();
     const auto at = std::lower_bound(prepared.table_band.begin(), prepared.table_band.end(), i);

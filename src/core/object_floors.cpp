@@ -164,7 +164,7 @@ std::vector<std::vector<int>> enclosedFloors(const Scene& scene, const Preproces
   const Eigen::Vector3f e1 = up.cross(helper).normalized();
   const Eigen::Vector3f e2 = up.cross(e1);
 
-  const auto height = [&](const Eigen::Vector3f& p) { return up.dot(p) + prepared.table_plane[3] / up_norm; };
+  const auto height = [&](const Eigen::Vector3f& p) { return prepared.tableHeight(p); };
   std::vector<Footprint> footprints;
   footprints.reserve(segments.size());
   for (const std::vector<int>& segment : segments) {

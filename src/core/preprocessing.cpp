@@ -17,6 +17,7 @@
 #include "symmetry_segmentation/errors.h"
 #include "symmetry_segmentation/organized_normals.h"
 #include "symmetry_segmentation/quantile.h"
+
 #include "symmetry_segmentation/voxel_grid.h"
 
 namespace symmetry_segmentation {
@@ -316,9 +317,21 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
     if (found) {
       out.has_table = true;
       out.table_plane = orientPlane(plane, scene, out.viewpoint, *coarse, params.ransac_distance);
+      // The plane through the table's own cells, and heights over its curved top: the same table
+      // whichever plane found it, and a cut that follows it where it drifts or bends.
+      if (params.table_surface_cell > 0.0f) {
+        auto surface = TableSurface::fit(input, finite, out.table_plane, params.ransac_distance, scene.has_normals,
+                                         params.table_surface_cell);
+        if (surface) {
+          out.table_plane = surface->plane();
+          out.table_surface = TableSurface::fit(input, finite, out.table_plane, params.ransac_distance,
+                                                scene.has_normals, params.table_surface_cell);
+        }
+      }
       std::vector<float> distances(finite.size());
+      const auto tableHeight = [&](const Eigen::Vector3f& p) { return out.tableHeight(p); };
       for (std::size_t k = 0; k < finite.size(); ++k) {
-        distances[k] = out.table_plane.head<3>().dot(input.points[finite[k]].getVector3fMap()) + out.table_plane[3];
+        distances[k] = tableHeight(input.points[finite[k]].getVector3fMap());
       }
       const std::optional<TableSpread> spread = tableSpread(distances, params);
       out.table_noise =
@@ -340,7 +353,7 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
       if (out.support_polygon) {
         std::vector<bool> coarse_above(coarse->size());
         for (std::size_t v = 0; v < coarse->size(); ++v) {
-          const float height = out.table_plane.head<3>().dot(coarse->points[v].getVector3fMap()) + out.table_plane[3];
+          const float height = tableHeight(coarse->points[v].getVector3fMap());
           coarse_above[v] = height > out.table_margin && height <= max_height;
         }
         std::vector<bool> keep =
