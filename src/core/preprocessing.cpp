@@ -333,7 +333,14 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
       for (std::size_t k = 0; k < finite.size(); ++k) {
         distances[k] = tableHeight(input.points[finite[k]].getVector3fMap());
       }
-      const std::optional<TableSpread> spread = tableSpread(distances, params);
+      // The margin from the spread about the plane, bends included: a far table's noise grows
+      // with the range, and the near table's scatter about its surface alone would leave the far
+      // table's specks above the cut.
+      std::vector<float> plane_distances(finite.size());
+      for (std::size_t k = 0; k < finite.size(); ++k) {
+        plane_distances[k] = out.table_plane.head<3>().dot(input.points[finite[k]].getVector3fMap()) + out.table_plane[3];
+      }
+      const std::optional<TableSpread> spread = tableSpread(plane_distances, params);
       out.table_noise =
           localTableNoise(input, finite, distances, out.table_plane, params.ransac_distance, scene.has_normals);
       out.table_margin = params.adaptive_table_margin ? marginFor(spread, params) : params.table_margin;
