@@ -14,6 +14,7 @@ namespace symmetry_segmentation {
 namespace {
 
 constexpr std::size_t kMinCellPoints = 5;
+constexpr std::size_t kMaxSampledPoints = 60000;
 // A quadratic has six terms: a few cells per term before its bends mean anything.
 constexpr std::size_t kMinCells = 24;
 constexpr float kFacingCos = 0.8f;  // within ~37 deg of the table's normal
@@ -68,12 +69,14 @@ std::optional<TableSurface> TableSurface::fit(const Cloud& cloud, const std::vec
   if (!(plane.head<3>().norm() > 0.0f) || !(band > 0.0f) || !(cell > 0.0f) || indices.empty()) return std::nullopt;
   TableSurface surface(plane, Eigen::Vector3f::Zero());
   std::optional<TableSurface> fitted;
+  // Every stride-th point: a camera frame's 2 cm cell holds some 100 pixels, a score of them tell.
+  const std::size_t stride = std::max<std::size_t>(1, indices.size() / kMaxSampledPoints);
   for (int round = 0; round < kGatherRounds; ++round) {
     // The band around the current surface, binned into cells by place on the plane.
     const auto gather = [&](bool facing_only) {
       std::vector<std::pair<std::int64_t, Eigen::Vector3f>> binned;  // (cell, (u, v, height over the plane))
-      for (int i : indices) {
-        const PointT& point = cloud.points[i];
+      for (std::size_t k = 0; k < indices.size(); k += stride) {
+        const PointT& point = cloud.points[indices[k]];
         const Eigen::Vector3f p = point.getVector3fMap();
         if (!(std::fabs(surface.height(p)) < band)) continue;
         if (facing_only && !(std::fabs(point.getNormalVector3fMap().dot(surface.up_)) >= kFacingCos)) continue;
