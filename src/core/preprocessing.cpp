@@ -17,7 +17,6 @@
 #include "symmetry_segmentation/errors.h"
 #include "symmetry_segmentation/organized_normals.h"
 #include "symmetry_segmentation/quantile.h"
-
 #include "symmetry_segmentation/voxel_grid.h"
 
 namespace symmetry_segmentation {
@@ -329,9 +328,8 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
         }
       }
       std::vector<float> distances(finite.size());
-      const auto tableHeight = [&](const Eigen::Vector3f& p) { return out.tableHeight(p); };
       for (std::size_t k = 0; k < finite.size(); ++k) {
-        distances[k] = tableHeight(input.points[finite[k]].getVector3fMap());
+        distances[k] = out.tableHeight(input.points[finite[k]].getVector3fMap());
       }
       // The margin from the spread about the plane, bends included: a far table's noise grows
       // with the range, and the near table's scatter about its surface alone would leave the far
@@ -360,7 +358,7 @@ PreprocessedScene preprocess(const Scene& scene, const PreprocessParams& params)
       if (out.support_polygon) {
         std::vector<bool> coarse_above(coarse->size());
         for (std::size_t v = 0; v < coarse->size(); ++v) {
-          const float height = tableHeight(coarse->points[v].getVector3fMap());
+          const float height = out.tableHeight(coarse->points[v].getVector3fMap());
           coarse_above[v] = height > out.table_margin && height <= max_height;
         }
         std::vector<bool> keep =

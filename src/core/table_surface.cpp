@@ -126,15 +126,22 @@ std::optional<TableSurface> TableSurface::fit(const Cloud& cloud, const std::vec
     TableSurface candidate = surface;
     candidate.max_lift_ = band;
     residualsOf(candidate);
-    for (int pass = 0; pass < kRobustRounds; ++pass) {
+    // The cells within kOutlierSigmas robust sigmas of the residuals' median.
+    const auto keptCells = [&]() {
       std::vector<float> sorted = residuals;
       const float median = quantileOf(sorted, 0.5f);
       const float limit = std::max(kOutlierSigmas * robustSigma(residuals), kMinOutlierDistance);
+      std::vector<bool> kept(samples.size());
+      for (std::size_t c = 0; c < samples.size(); ++c) kept[c] = std::fabs(residuals[c] - median) <= limit;
+      return kept;
+    };
+    for (int pass = 0; pass < kRobustRounds; ++pass) {
+      const std::vector<bool> kept = keptCells();
       Eigen::Matrix<double, 6, 6> normal = Eigen::Matrix<double, 6, 6>::Identity() * kRidge;
       Eigen::Vector<double, 6> rhs = Eigen::Vector<double, 6>::Zero();
       std::size_t used = 0;
       for (std::size_t c = 0; c < samples.size(); ++c) {
-        if (std::fabs(residuals[c] - median) > limit) continue;
+        if (!kept[c]) continue;
         const Eigen::Vector<double, 6> t = candidate.terms(placeOf(samples[c])).cast<double>();
         normal += t * t.transpose();
         rhs += t * static_cast<double>(samples[c].height);
@@ -154,16 +161,15 @@ std::optional<TableSurface> TableSurface::fit(const Cloud& cloud, const std::vec
     candidate.max_lift_ = std::min(max_lift, band);
     // The plane through the cells the fit kept: the table's own plane, whichever plane it began from.
     {
-      std::vector<float> last = residuals;
-      const float median = quantileOf(last, 0.5f);
-      const float limit = std::max(kOutlierSigmas * robustSigma(residuals), kMinOutlierDistance);
+      const std::vector<bool> kept_cells = keptCells();
       Eigen::Vector3d mean = Eigen::Vector3d::Zero();
       std::vector<Eigen::Vector3d> kept;
       for (std::size_t c = 0; c < samples.size(); ++c) {
-        if (std::fabs(residuals[c] - median) > limit) continue;
+        if (!kept_cells[c]) continue;
         kept.push_back((placeOf(samples[c]) + surface.up_ * (samples[c].height - surface.offset_)).cast<double>());
         mean += kept.back();
       }
+      if (kept.size() < kMinCells) break;
       mean /= static_cast<double>(kept.size());
       Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
       for (const auto& q : kept) scatter += (q - mean) * (q - mean).transpose();
