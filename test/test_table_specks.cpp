@@ -85,8 +85,8 @@ TEST(TableSpecks, OnlyTheSegmentsOwnPointsJoinPieces) {
   EXPECT_EQ(ss::withoutTableSpecks(cloud, neighbours, segment, kTable, kLink, kScrapHeight), std::vector<int>{0});
   EXPECT_EQ(ss::withoutTableSpecks(cloud, neighbours, {0, 1, 2}, kTable, kLink, kScrapHeight),
             (std::vector<int>{0, 1, 2}));
-  EXPECT_EQ(ss::withoutTableSpecks(cloud, neighbours, segment, ss::PlaneCoefficients::Zero(), kLink, kScrapHeight),
-            segment);
+  const ss::TableTop unoriented(ss::PlaneCoefficients::Zero());
+  EXPECT_EQ(ss::withoutTableSpecks(cloud, neighbours, segment, unoriented, kLink, kScrapHeight), segment);
 }
 
 TEST(TableSpecks, ALowPieceTheCallerKeepsStays) {
@@ -108,4 +108,26 @@ TEST(TableSpecks, ALowPieceTheCallerKeepsStays) {
   };
   EXPECT_EQ(ss::withoutTableSpecks(cloud, neighbours, segment, kTable, kLink, kScrapHeight, keep_flat_pieces), segment);
   EXPECT_EQ(asked, 1u) << "asked once per low piece";
+}
+
+TEST(TableSpecks, HeightsAreOverTheTablesFittedTopWhereItBendsAwayFromItsPlane) {
+  // A table rising by 0.1 x^2 (2 cm at x = 0.45, a far table bending away) and specks 1 cm over
+  // it there: over the plane they stand 1.9-3.1 cm high, above the scrap height, and stay; over
+  // the table's fitted top they are 1 cm high and go.
+  ss::Cloud table;
+  for (float x = -0.5f; x <= 0.5f; x += 0.01f) {
+    for (float y = -0.4f; y <= 0.4f; y += 0.01f) table.push_back(at(x, y, 0.1f * x * x));
+  }
+  const auto surface = ss::TableSurface::fit(table, range(0, static_cast<int>(table.size())), kTable, 0.04f,
+                                             /*facing_up=*/false, 0.02f);
+  ASSERT_TRUE(surface);
+  ss::Cloud cloud;
+  test_clouds::addBox(cloud, {-0.05f, -0.05f, 0.0f}, {0.05f, 0.05f, 0.1f}, 0.01f);
+  const int box_size = static_cast<int>(cloud.size());
+  for (float x = 0.3f; x < 0.48f; x += 0.04f) cloud.push_back(at(x, 0.0f, 0.1f * x * x + 0.01f));
+  const auto neighbours = neighboursWithin5cm(cloud);
+  const std::vector<int> segment = range(0, static_cast<int>(cloud.size()));
+  EXPECT_EQ(ss::withoutTableSpecks(cloud, neighbours, segment, kTable, kLink, kScrapHeight), segment);
+  EXPECT_EQ(ss::withoutTableSpecks(cloud, neighbours, segment, ss::TableTop(kTable, surface), kLink, kScrapHeight),
+            range(0, box_size));
 }

@@ -87,10 +87,8 @@ struct PreprocessedScene {
   /// The table's top as a curved surface over table_plane, when one was fitted (table_surface_cell).
   std::optional<TableSurface> table_surface;
   /// Signed height of `p` over the table's top: over table_surface when fitted, else over table_plane.
-  float tableHeight(const Eigen::Vector3f& p) const {
-    if (table_surface) return table_surface->height(p);
-    return (table_plane.head<3>().dot(p) + table_plane[3]) / table_plane.head<3>().norm();
-  }
+  float tableHeight(const Eigen::Vector3f& p) const { return tableTopHeight(table_plane, table_surface, p); }
+  TableTop tableTop() const { return TableTop(table_plane, table_surface); }
   std::optional<SupportPolygon> support_polygon;  ///< The table's extent, when cropped to it.
   Eigen::Vector3f viewpoint = Eigen::Vector3f::Zero();         ///< Used to orient normals.
   /// A camera frame without normals gets them from its pixel grid, the points dropped within

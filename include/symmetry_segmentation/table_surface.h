@@ -7,6 +7,7 @@
 // plane's offset. Heights measured from the surface follow the table instead.
 
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -46,6 +47,24 @@ class TableSurface {
   float max_lift_ = 0.0f;
   std::size_t cells_ = 0;
   PlaneCoefficients plane_ = PlaneCoefficients::Zero();
+};
+
+/// Signed height of `p` over `surface` if fitted, else over `plane` (normal up; m).
+inline float tableTopHeight(const PlaneCoefficients& plane, const std::optional<TableSurface>& surface,
+                            const Eigen::Vector3f& p) {
+  if (surface) return surface->height(p);
+  return (plane.head<3>().dot(p) + plane[3]) / plane.head<3>().norm();
+}
+
+/// Where heights are measured from: the table's plane (normal up), and the surface over it when
+/// one was fitted.
+struct TableTop {
+  TableTop(const PlaneCoefficients& table_plane, std::optional<TableSurface> table_surface = std::nullopt)
+      : plane(table_plane), surface(std::move(table_surface)) {}
+  /// Signed height of `p` over the surface if fitted, else over the plane (m).
+  float height(const Eigen::Vector3f& p) const { return tableTopHeight(plane, surface, p); }
+  PlaneCoefficients plane;
+  std::optional<TableSurface> surface;
 };
 
 }  // namespace symmetry_segmentation

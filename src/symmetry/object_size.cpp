@@ -152,12 +152,11 @@ std::optional<float> TableSightings::seenShareUnder(const Cloud& cloud, const st
   return static_cast<float>(seen) / static_cast<float>(inner);
 }
 
-float topHeight(const Cloud& cloud, const std::vector<int>& points, const PlaneCoefficients& table_plane) {
+float topHeight(const Cloud& cloud, const std::vector<int>& points, const TableTop& table) {
   if (points.empty()) return 0.0f;
-  const float norm = table_plane.head<3>().norm();
   std::vector<float> heights;
   heights.reserve(points.size());
-  for (int i : points) heights.push_back((table_plane.head<3>().dot(cloud[i].getVector3fMap()) + table_plane[3]) / norm);
+  for (int i : points) heights.push_back(table.height(cloud[i].getVector3fMap()));
   return quantileOf(heights, 1.0f - kTrim);
 }
 
@@ -165,6 +164,7 @@ void ObjectSizeStage::run(PipelineState& state) const {
   const float plane_distance = onPlaneDistance(voxel_size_);
   const std::size_t before = state.segments.size();
   const bool check_top = params_.min_top_height > 0.0f && state.prepared.has_table;
+  const TableTop table_top = state.prepared.tableTop();
   // Made when first asked.
   std::optional<TableSightings> table_seen;
   const auto tableSeen = [&]() -> const TableSightings& {
@@ -173,7 +173,7 @@ void ObjectSizeStage::run(PipelineState& state) const {
   };
   std::size_t thin_kept = 0;
   const auto tableScrap = [&](const CandidateSegment& segment) {
-    const float top = topHeight(*state.cloud, segment.points, state.prepared.table_plane);
+    const float top = topHeight(*state.cloud, segment.points, table_top);
     if (top >= params_.min_top_height * noiseGrowth(*state.cloud, segment.points, state.prepared)) return false;
     // Without the input cloud nothing tells a scrap from a thin object: the height decides. So
     // it does for a top under two margins (6 sigma of the table's noise): the table's own
@@ -200,7 +200,7 @@ void ObjectSizeStage::run(PipelineState& state) const {
     for (CandidateSegment& segment : state.segments) {
       const float scrap_height = params_.min_top_height * noiseGrowth(*state.cloud, segment.points, state.prepared);
       std::vector<int> kept = withoutTableSpecks(*state.cloud, state.graph->neighbours(), segment.points,
-                                                 state.prepared.table_plane, kPieceLinkVoxels * voxel_size_,
+                                                 table_top, kPieceLinkVoxels * voxel_size_,
                                                  scrap_height, hidesTheTable);
       specks += segment.points.size() - kept.size();
       // Mostly specks, the segment was the table's noise with a scrap of something on it.

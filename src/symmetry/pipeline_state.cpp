@@ -39,8 +39,8 @@ PipelineState preparePipeline(const Scene& scene, const PreprocessParams& prepro
   state.occupancy = std::make_unique<OccupancyMap>(occupancyForScene(scene, ray_cast));
   state.timing_ms.emplace_back("occupancy", stage.lap());
 
-  std::optional<PlaneCoefficients> table;
-  if (state.prepared.has_table) table = state.prepared.table_plane;
+  std::optional<TableTop> table;
+  if (state.prepared.has_table) table = state.prepared.tableTop();
   // On a coarser working grid the points stand farther apart: isolated means no other within
   // two voxels at least, else every point of a 3 cm grid would be.
   SymmetryCutParams cut = params.cut;

@@ -27,14 +27,14 @@ float freeSpaceCost(float distance, const SymmetryCutParams& params) {
 
 ReflectionDataTerm::ReflectionDataTerm(const Cloud& cloud, const PointGrid& grid, const Eigen::AlignedBox3f& cloud_box,
                                        const OccupancyGrid& occupancy,
-                                       const std::optional<PlaneCoefficients>& table_plane,
+                                       const std::optional<TableTop>& table,
                                        const SymmetryCutParams& params)
-    : cloud_(cloud), grid_(grid), cloud_box_(cloud_box), occupancy_(occupancy), table_plane_(table_plane),
+    : cloud_(cloud), grid_(grid), cloud_box_(cloud_box), occupancy_(occupancy), table_(table),
       params_(params) {}
 
 float ReflectionDataTerm::heightAboveTable(const Eigen::Vector3f& point) const {
-  if (!table_plane_) return std::numeric_limits<float>::infinity();
-  return table_plane_->head<3>().dot(point) + (*table_plane_)[3];
+  if (!table_) return std::numeric_limits<float>::infinity();
+  return table_->height(point);
 }
 
 float ReflectionDataTerm::unobservedWithin(const Eigen::Vector3f& point, float limit) const {

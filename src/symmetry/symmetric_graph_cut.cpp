@@ -77,14 +77,14 @@ std::vector<std::vector<int>> symmetricKnn(const Cloud& cloud, const pcl::KdTree
 }  // namespace
 
 SymmetricGraphCut::SymmetricGraphCut(Cloud::ConstPtr cloud, const OccupancyMap& occupancy,
-                                     std::optional<PlaneCoefficients> table_plane, const SymmetryCutParams& params)
-    : cloud_(std::move(cloud)), occupancy_(occupancy), table_plane_(std::move(table_plane)), params_(params) {
+                                     std::optional<TableTop> table, const SymmetryCutParams& params)
+    : cloud_(std::move(cloud)), occupancy_(occupancy), table_(std::move(table)), params_(params) {
   if (!cloud_) throw std::invalid_argument("SymmetricGraphCut needs a cloud");
   for (const auto& point : cloud_->points) {
     if (isFinitePoint(point)) cloud_box_.extend(point.getVector3fMap());
   }
   // Reflections that matter land within dbuf of the cloud (farther ones are judged free or
-  // unknown by the map itself); below the table they are decided by the table plane. The 2 cm
+  // unknown by the map itself); below the table they are decided by the table's top. The 2 cm
   // beyond is fixed slack of the cache, not a tunable: the answers are the map's either way.
   Eigen::AlignedBox3f reach = cloud_box_;
   if (!reach.isEmpty()) {
@@ -113,7 +113,7 @@ SymmetricGraphCut::SymmetricGraphCut(Cloud::ConstPtr cloud, const OccupancyMap& 
 }
 
 ReflectionDataTerm SymmetricGraphCut::dataTermView() const {
-  return ReflectionDataTerm(*cloud_, grid_, cloud_box_, *occupancy_grid_, table_plane_, params_);
+  return ReflectionDataTerm(*cloud_, grid_, cloud_box_, *occupancy_grid_, table_, params_);
 }
 
 ReflectionEvidence SymmetricGraphCut::dataTerm(int index, const SymmetryPlane& plane) const {

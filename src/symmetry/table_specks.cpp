@@ -9,11 +9,10 @@
 namespace symmetry_segmentation {
 
 std::vector<int> withoutTableSpecks(const Cloud& cloud, const std::vector<std::vector<int>>& neighbours,
-                                    const std::vector<int>& segment, const PlaneCoefficients& table_plane,
+                                    const std::vector<int>& segment, const TableTop& table,
                                     float max_link, float max_height,
                                     const std::function<bool(const std::vector<int>&)>& keep_low_piece) {
-  const float norm = table_plane.head<3>().norm();
-  if (segment.empty() || !(norm > 0.0f)) return segment;
+  if (segment.empty() || !(table.plane.head<3>().norm() > 0.0f)) return segment;
   const auto outside = [&](int i) {
     return i < 0 || static_cast<std::size_t>(i) >= cloud.size() || static_cast<std::size_t>(i) >= neighbours.size();
   };
@@ -29,7 +28,7 @@ std::vector<int> withoutTableSpecks(const Cloud& cloud, const std::vector<std::v
   std::vector<char> piece_high(segment.size(), 0);
   bool any_high = false;
   for (int k = 0; k < size; ++k) {
-    const float height = (table_plane.head<3>().dot(cloud[segment[k]].getVector3fMap()) + table_plane[3]) / norm;
+    const float height = table.height(cloud[segment[k]].getVector3fMap());
     if (height > max_height) {
       piece_high[pieces.find(k)] = 1;
       any_high = true;

@@ -22,13 +22,14 @@
 
 #include "symmetry_segmentation/scene.h"
 #include "symmetry_segmentation/table_grid.h"
+#include "symmetry_segmentation/table_surface.h"
 #include "symmetry_segmentation/symmetry/stage.h"
 #include "symmetry_segmentation/symmetry/symmetry_params.h"
 
 namespace symmetry_segmentation {
 
-/// Height over `table_plane` of the top of `points` (95th percentile of their heights; 0 when empty).
-float topHeight(const Cloud& cloud, const std::vector<int>& points, const PlaneCoefficients& table_plane);
+/// Height over `table`'s top of the top of `points` (95th percentile of their heights; 0 when empty).
+float topHeight(const Cloud& cloud, const std::vector<int>& points, const TableTop& table);
 
 /// Where the table itself was seen: the cells (side `cell`, on a grid in the table's plane) over
 /// which the input cloud has points within `band` of the plane (either side).

@@ -33,6 +33,7 @@
 #include "symmetry_segmentation/scene.h"
 #include "symmetry_segmentation/segmentation_result.h"
 #include "symmetry_segmentation/symmetry/point_grid.h"
+#include "symmetry_segmentation/table_surface.h"
 #include "symmetry_segmentation/symmetry/symmetry_params.h"
 
 namespace symmetry_segmentation {
@@ -66,13 +67,13 @@ float freeSpaceCost(float distance, const SymmetryCutParams& params);
 class ReflectionDataTerm {
  public:
   ReflectionDataTerm(const Cloud& cloud, const PointGrid& grid, const Eigen::AlignedBox3f& cloud_box,
-                     const OccupancyGrid& occupancy, const std::optional<PlaneCoefficients>& table_plane,
+                     const OccupancyGrid& occupancy, const std::optional<TableTop>& table,
                      const SymmetryCutParams& params);
 
   ReflectionEvidence evaluate(int index, const SymmetryPlane& plane) const;
 
  private:
-  /// Signed distance to the table plane (+inf without one).
+  /// Signed height over the table's top (+inf without a table).
   float heightAboveTable(const Eigen::Vector3f& point) const;
   /// The first probe distance (1..unobserved_steps x dmax, below `limit`) at which a grid
   /// direction from `point` meets space that is not free; `limit` if none does.
@@ -82,7 +83,7 @@ class ReflectionDataTerm {
   const PointGrid& grid_;
   const Eigen::AlignedBox3f& cloud_box_;
   const OccupancyGrid& occupancy_;
-  const std::optional<PlaneCoefficients>& table_plane_;
+  const std::optional<TableTop>& table_;
   const SymmetryCutParams& params_;
 };
 

@@ -28,9 +28,10 @@ namespace symmetry_segmentation {
 class SymmetricGraphCut {
  public:
   /// `cloud`: working cloud with oriented normals; `occupancy`: the scene's map (must outlive
-  /// this object); `table_plane`: the supporting plane, oriented toward the objects, if known.
+  /// this object); `table`: the supporting plane, oriented toward the objects, and the table's
+  /// fitted top if known.
   SymmetricGraphCut(Cloud::ConstPtr cloud, const OccupancyMap& occupancy,
-                    std::optional<PlaneCoefficients> table_plane, const SymmetryCutParams& params);
+                    std::optional<TableTop> table, const SymmetryCutParams& params);
 
   /// Foreground working-cloud indices (sorted) for `plane`: one connected object, the one holding
   /// most `anchor` points if any are given (see strongest_component.h).
@@ -57,7 +58,7 @@ class SymmetricGraphCut {
   Cloud::ConstPtr cloud_;
   const OccupancyMap& occupancy_;
   std::unique_ptr<OccupancyGrid> occupancy_grid_;  ///< occupancy_ around the cloud, for the data term.
-  std::optional<PlaneCoefficients> table_plane_;
+  std::optional<TableTop> table_;
   SymmetryCutParams params_;
   pcl::KdTreeFLANN<PointT> tree_;
   std::vector<std::vector<int>> neighbours_;
