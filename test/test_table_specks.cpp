@@ -115,8 +115,8 @@ TEST(TableSpecks, HeightsAreOverTheTablesFittedTopWhereItBendsAwayFromItsPlane) 
   // it there: over the plane they stand 1.9-3.1 cm high, above the scrap height, and stay; over
   // the table's fitted top they are 1 cm high and go.
   ss::Cloud table;
-  for (float x = -0.5f; x <= 0.5f; x += 0.01f) {
-    for (float y = -0.4f; y <= 0.4f; y += 0.01f) table.push_back(at(x, y, 0.1f * x * x));
+  for (float x = -0.5f; x <= 0.5f; x += 0.005f) {
+    for (float y = -0.4f; y <= 0.4f; y += 0.005f) table.push_back(at(x, y, 0.1f * x * x));
   }
   const auto surface = ss::TableSurface::fit(table, range(0, static_cast<int>(table.size())), kTable, 0.04f,
                                              /*facing_up=*/false, 0.02f);

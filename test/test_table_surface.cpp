@@ -83,3 +83,19 @@ TEST(TableSurface, TooLittleTableTellsNoSurface) {
   EXPECT_FALSE(ss::TableSurface::fit(table.cloud, {}, ss::PlaneCoefficients(0, 0, 1, 0), 0.01f, true, 0.03f));
   EXPECT_FALSE(ss::TableSurface::fit(table.cloud, table.indices, ss::PlaneCoefficients(0, 0, 0, 0), 0.01f, true, 0.03f));
 }
+
+TEST(TableSurface, AStripOfCellsAlongALineTellsNoPlane) {
+  // The table's points 4 cm wide across its 1 m: enough cells, but a plane through them could
+  // tilt about the strip at will.
+  Table table(0.0f, false);
+  std::vector<int> strip;
+  for (int i : table.indices) {
+    if (std::fabs(table.cloud[i].y) < 0.02f) strip.push_back(i);
+  }
+  EXPECT_FALSE(ss::TableSurface::fit(table.cloud, strip, ss::PlaneCoefficients(0, 0, 1, 0), 0.01f, true, 0.02f));
+  std::vector<int> wider;
+  for (int i : table.indices) {
+    if (std::fabs(table.cloud[i].y) < 0.1f) wider.push_back(i);
+  }
+  EXPECT_TRUE(ss::TableSurface::fit(table.cloud, wider, ss::PlaneCoefficients(0, 0, 1, 0), 0.01f, true, 0.02f));
+}

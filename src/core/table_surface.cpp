@@ -29,6 +29,9 @@ constexpr int kRobustRounds = 5;
 constexpr int kGatherRounds = 2;
 // Keeps the normal equations invertible where the cells lie along a line (a narrow table).
 constexpr double kRidge = 1e-6;
+// Cells spread less than this many cell widths across (a strip along one line) tilt a plane
+// through them about that line at will: they tell no plane.
+constexpr double kMinCrossSpreadCells = 2.0;
 
 struct CellSample {
   float u = 0.0f, v = 0.0f;  ///< Mean place on the plane (m).
@@ -174,6 +177,8 @@ std::optional<TableSurface> TableSurface::fit(const Cloud& cloud, const std::vec
       Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
       for (const auto& q : kept) scatter += (q - mean) * (q - mean).transpose();
       Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(scatter);
+      const double cross_spread = std::sqrt(std::max(0.0, solver.eigenvalues()(1)) / static_cast<double>(kept.size()));
+      if (cross_spread < kMinCrossSpreadCells * static_cast<double>(cell)) break;
       Eigen::Vector3d normal = solver.eigenvectors().col(0);
       if (normal.dot(surface.up_.cast<double>()) < 0.0) normal = -normal;
       candidate.plane_ << normal.cast<float>(), static_cast<float>(-normal.dot(mean));
