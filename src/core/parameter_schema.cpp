@@ -85,7 +85,7 @@ const Schema& schema() {
                                      [](auto& c) -> auto& { return c.symmetry.curves; });
     s.section<CurvePairParams>("symmetry.curve_pairs", "stage curve_pairs: planes from matched curve pairs",
                                [](auto& c) -> auto& { return c.symmetry.curve_pairs; });
-    s.section<UprightHypothesisParams>("symmetry.upright", "stage upright: vertical planes from single surfaces",
+    s.section<UprightHypothesisParams>("symmetry.upright", "stage upright: vertical planes from single surfaces, horizontal ones halfway up",
                                        [](auto& c) -> auto& { return c.symmetry.upright; });
     s.section<SymmetryCutParams>("symmetry.cut", "stage cut: graph cut per hypothesis; the data term of every stage",
                                  [](auto& c) -> auto& { return c.symmetry.cut; });

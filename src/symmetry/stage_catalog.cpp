@@ -53,7 +53,7 @@ const std::vector<StageInfo>& stageCatalog() {
        [](const Config& c) { return made<CurvePairStage>(c.symmetry.curve_pairs); }},
       {"upright", K::HypothesisSource, "vertical planes from single surfaces: axes of revolution, face bisectors (needs the table)",
        {P::Surfaces}, {P::Hypotheses},
-       [](const Config& c) { return made<UprightStage>(c.symmetry.upright); }},
+       [](const Config& c) { return made<UprightStage>(c.symmetry.upright, c.preprocessing.voxel_size); }},
       {"cut", K::CandidateProducer, "graph cut per hypothesis not cut yet, with the candidate's scores (paper)",
        {P::Hypotheses}, {P::Candidates},
        [](const Config& c) { return made<GraphCutStage>(c.symmetry.filter); }},

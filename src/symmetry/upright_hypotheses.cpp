@@ -10,6 +10,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "symmetry_segmentation/symmetry/mid_height_hypotheses.h"
 #include "symmetry_segmentation/symmetry/pipeline_state.h"
 #include "symmetry_segmentation/symmetry/symmetry_plane.h"
 
@@ -418,6 +419,11 @@ void UprightStage::run(PipelineState& state) const {
     const std::size_t before = state.hypotheses.size();
     appendDistinctHypotheses(state.hypotheses, uprightHypotheses(*state.evidence, state.surfaces, *state.up, params_),
                              params_.distinct_angle_deg, params_.distinct_distance);
+    if (state.prepared.has_table) {
+      const std::vector<SymmetryHypothesis> mid = midHeightHypotheses(
+          *state.cloud, state.surfaces, state.prepared.tableTop(), params_, voxel_size_);
+      state.hypotheses.insert(state.hypotheses.end(), mid.begin(), mid.end());
+    }
     added = state.hypotheses.size() - before;
   }
   state.count("hypotheses", added);

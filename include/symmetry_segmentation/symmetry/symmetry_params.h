@@ -99,6 +99,7 @@ struct UprightHypothesisParams {
   float match_tie_break = 0.05f;
   float distinct_angle_deg = 6.0f;
   float distinct_distance = 0.015f;
+  float min_mid_height = 0.05f;
 };
 
 inline void describeParameters(ParameterList<UprightHypothesisParams>& list) {
@@ -130,7 +131,9 @@ inline void describeParameters(ParameterList<UprightHypothesisParams>& list) {
            "weight of a matched reflection against one contradicted by free space, when orienting")
       .add("distinct_angle_deg", &P::distinct_angle_deg, 0.1, 180.0, "deg",
            "an upright plane within this angle...")
-      .add("distinct_distance", &P::distinct_distance, 0.001, 0.5, "m", "...and offset of a plane already proposed is not added");
+      .add("distinct_distance", &P::distinct_distance, 0.001, 0.5, "m", "...and offset of a plane already proposed is not added")
+      .add("min_mid_height", &P::min_mid_height, 0.0, 1.0, "m",
+           "a horizontal face at least this high over the table, or over a lower face beside or under it, proposes the horizontal plane halfway down (an object standing on the table or on another is mirror-symmetric about it); 0: none");
 }
 
 /// Stage cut: graph cut per hypothesis (paper eq. 7-12); also the data term of every later stage.

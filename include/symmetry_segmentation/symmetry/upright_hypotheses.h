@@ -3,7 +3,8 @@
 // objects stand on the table and a can or a bottle has almost no normal edges for curve pairs:
 // the plane through a surface of revolution's axis that the scene contradicts least (a mug's
 // goes through its handle), the bisector of a vertical face, the principal axes of a horizontal
-// face. Needs the table; the cut, refine and filter judge these like any other hypothesis.
+// face. Needs the table; the cut, refine and filter judge these like any other hypothesis. The
+// stage also adds the horizontal planes halfway up objects (mid_height_hypotheses.h).
 
 #include <vector>
 
@@ -52,14 +53,17 @@ std::vector<SymmetryHypothesis> uprightHypotheses(const SceneEvidence& evidence,
 void appendDistinctHypotheses(std::vector<SymmetryHypothesis>& base, const std::vector<SymmetryHypothesis>& extra,
                               float max_angle_deg, float max_distance);
 
-/// The stage: upright planes not near-equal to a hypothesis already there, appended.
+/// The stage: upright planes not near-equal to a hypothesis already there, appended; then the
+/// horizontal planes halfway up (each anchored on its own face, so two at one height both stay).
+/// `voxel_size`: the working voxel, how near a lower face must reach to be under or beside one.
 class UprightStage : public Stage {
  public:
-  explicit UprightStage(const UprightHypothesisParams& params) : params_(params) {}
+  UprightStage(const UprightHypothesisParams& params, float voxel_size) : params_(params), voxel_size_(voxel_size) {}
   void run(PipelineState& state) const override;
 
  private:
   UprightHypothesisParams params_;
+  float voxel_size_;
 };
 
 }  // namespace symmetry_segmentation
