@@ -104,36 +104,52 @@ TEST(OccluderGaps, NoPlaneWhereTheGapWasSeenThroughOrThePiecesTouch) {
   EXPECT_TRUE(ss::occluderGapHypothesis(scene.cloud, scene.left, scene.right, scene.occupancy(), short_span).empty());
 }
 
+namespace {
+
+/// The prepared view of `scene` (test_clouds::boxBehindAPost) with the long box's two visible
+/// pieces as the only candidates (as on real frames, where no curve pair spans the post).
+struct PiecesBehindAPost {
+  ss::PipelineState state;
+  std::vector<int> left, right, box, post;
+
+  PiecesBehindAPost(const ss::Scene& scene, const ss::SegmentationConfig& config) {
+    state = ss::preparePipeline(scene, config.preprocessing, config.symmetry);
+    for (int v = 0; v < static_cast<int>(state.cloud->size()); ++v) {
+      const int input = state.prepared.voxel_to_input[v].front();
+      if (scene.labels[input] == 2) post.push_back(v);
+      if (scene.labels[input] != 1) continue;
+      box.push_back(v);
+      const float x = state.cloud->points[v].x;
+      if (x < -0.05f) left.push_back(v);
+      if (x > 0.05f) right.push_back(v);
+    }
+    for (const auto* piece : {&left, &right}) {
+      ss::SymmetryHypothesis hypothesis;
+      hypothesis.plane.normal = Eigen::Vector3f::UnitX();  // each piece's own mid-plane
+      hypothesis.plane.distance = -0.5f * (state.cloud->points[piece->front()].x + state.cloud->points[piece->back()].x);
+      ss::CandidateSegment candidate;
+      candidate.points = *piece;
+      candidate.plane = hypothesis.plane;
+      candidate.scores.occlusion = 1.0f;
+      candidate.scores.smoothness = 0.0f;
+      state.hypotheses.push_back(hypothesis);
+      state.candidates.push_back(candidate);
+    }
+  }
+};
+
+}  // namespace
+
 TEST(OccluderGaps, TheStageAddsTheCutThatJoinsBothPiecesAndNothingElse) {
-  // The view of test_clouds::boxBehindAPost with the long box's two visible pieces as the only
-  // candidates (as on real frames, where no curve pair spans the post).
   const ss::Scene scene = test_clouds::boxBehindAPost();
   const ss::SegmentationConfig config;
-  ss::PipelineState state = ss::preparePipeline(scene, config.preprocessing, config.symmetry);
-  std::vector<int> left, right, box, post;
-  for (int v = 0; v < static_cast<int>(state.cloud->size()); ++v) {
-    const int input = state.prepared.voxel_to_input[v].front();
-    if (scene.labels[input] == 2) post.push_back(v);
-    if (scene.labels[input] != 1) continue;
-    box.push_back(v);
-    const float x = state.cloud->points[v].x;
-    if (x < -0.05f) left.push_back(v);
-    if (x > 0.05f) right.push_back(v);
-  }
-  ASSERT_GT(left.size(), 40u);
+  PiecesBehindAPost pieces(scene, config);
+  ss::PipelineState& state = pieces.state;
+  const std::vector<int>& right = pieces.right;
+  const std::vector<int>& box = pieces.box;
+  const std::vector<int>& post = pieces.post;
+  ASSERT_GT(pieces.left.size(), 40u);
   ASSERT_GT(right.size(), 40u);
-  for (const auto* piece : {&left, &right}) {
-    ss::SymmetryHypothesis hypothesis;
-    hypothesis.plane.normal = Eigen::Vector3f::UnitX();  // each piece's own mid-plane
-    hypothesis.plane.distance = -0.5f * (state.cloud->points[piece->front()].x + state.cloud->points[piece->back()].x);
-    ss::CandidateSegment candidate;
-    candidate.points = *piece;
-    candidate.plane = hypothesis.plane;
-    candidate.scores.occlusion = 1.0f;
-    candidate.scores.smoothness = 0.0f;
-    state.hypotheses.push_back(hypothesis);
-    state.candidates.push_back(candidate);
-  }
   ss::OccluderGapStage(config.symmetry.occluder_gaps, config.symmetry.filter, config.symmetry.dedup).run(state);
   ASSERT_EQ(state.candidates.size(), 3u);
   ASSERT_EQ(state.hypotheses.size(), 3u) << "hypotheses and candidates stay aligned";
@@ -155,6 +171,33 @@ TEST(OccluderGaps, TheStageAddsTheCutThatJoinsBothPiecesAndNothingElse) {
   state.candidates[1].points = right_and_more;
   ss::OccluderGapStage(strict, config.symmetry.filter, config.symmetry.dedup).run(state);
   EXPECT_EQ(state.candidates.size(), 2u);
+}
+
+TEST(OccluderGaps, PiecesOfNoColourInCommonAreTwoObjects) {
+  // The same view with the box's left half green and its right half pink: two objects side by
+  // side behind the post, as far as anything can tell.
+  ss::Scene scene = test_clouds::boxBehindAPost();
+  for (std::size_t i = 0; i < scene.cloud->size(); ++i) {
+    if (scene.labels[i] != 1) continue;
+    ss::PointT& p = scene.cloud->points[i];
+    const bool left = p.x < 0.0f;
+    p.r = left ? 40 : 230;
+    p.g = left ? 170 : 90;
+    p.b = left ? 60 : 160;
+  }
+  const ss::SegmentationConfig config;
+  PiecesBehindAPost pieces(scene, config);
+  ASSERT_GT(pieces.left.size(), 40u);
+  ASSERT_GT(pieces.right.size(), 40u);
+  EXPECT_LT(ss::sharedColorShare(*pieces.state.cloud, pieces.left, pieces.right, 15.0f), 0.05f);
+  EXPECT_GT(ss::sharedColorShare(*pieces.state.cloud, pieces.left, pieces.left, 15.0f), 0.95f);
+  ss::OccluderGapStage(config.symmetry.occluder_gaps, config.symmetry.filter, config.symmetry.dedup).run(pieces.state);
+  EXPECT_EQ(pieces.state.candidates.size(), 2u);
+  // Colour not asked, the plane across the gap joins them.
+  ss::OccluderGapParams geometry_only = config.symmetry.occluder_gaps;
+  geometry_only.min_shared_color = 0.0f;
+  ss::OccluderGapStage(geometry_only, config.symmetry.filter, config.symmetry.dedup).run(pieces.state);
+  EXPECT_EQ(pieces.state.candidates.size(), 3u);
 }
 
 TEST(OccluderGaps, PiecesShowingUnequalSharesOfTheWidthGetTheirPlaneTurned) {

@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 #include <pcl/common/centroid.h>
 
+#include "color_lab.h"
 #include "symmetry_segmentation/parallel_for.h"
 #include "symmetry_segmentation/quantile.h"
 #include "symmetry_segmentation/symmetry/duplicate_segments.h"
@@ -53,6 +54,22 @@ SymmetryHypothesis turnedAbout(const SymmetryHypothesis& hypothesis, const Cloud
 }
 
 }  // namespace
+
+float sharedColorShare(const Cloud& cloud, const std::vector<int>& points, const std::vector<int>& other,
+                       float max_difference) {
+  if (points.empty() || other.empty()) return 0.0f;
+  constexpr std::size_t kMaxPalette = 256;  // colours of `other` compared against: bounds the cost
+  const std::size_t stride = (other.size() + kMaxPalette - 1) / kMaxPalette;
+  std::vector<Eigen::Vector3f> palette;
+  for (std::size_t k = 0; k < other.size(); k += stride) palette.push_back(toLab(cloud[other[k]]));
+  std::size_t shared = 0;
+  for (int i : points) {
+    const Eigen::Vector3f lab = toLab(cloud[i]);
+    shared += std::any_of(palette.begin(), palette.end(),
+                          [&](const Eigen::Vector3f& c) { return colorDifference(lab, c) < max_difference; });
+  }
+  return static_cast<float>(shared) / static_cast<float>(points.size());
+}
 
 std::vector<SymmetryHypothesis> occluderGapHypothesis(const Cloud& cloud, const std::vector<int>& first,
                                                       const std::vector<int>& second, const OccupancyMap& occupancy,
@@ -110,6 +127,13 @@ void OccluderGapStage::run(PipelineState& state) const {
   for (std::size_t a = 0; a < pieces.size(); ++a) {
     for (std::size_t b = a + 1; b < pieces.size(); ++b) {
       if (overlapOfSmaller(pieces[a]->points, pieces[b]->points) > 0.0f) continue;
+      if (state.has_color && params_.min_shared_color > 0.0f &&
+          (sharedColorShare(*state.cloud, pieces[a]->points, pieces[b]->points, params_.max_color_difference) <
+               params_.min_shared_color ||
+           sharedColorShare(*state.cloud, pieces[b]->points, pieces[a]->points, params_.max_color_difference) <
+               params_.min_shared_color)) {
+        continue;
+      }
       for (auto& hypothesis :
            occluderGapHypothesis(*state.cloud, pieces[a]->points, pieces[b]->points, *state.occupancy, params_)) {
         first_plane_of_pair.push_back(planes.size());

@@ -9,7 +9,8 @@
 // the object's width: OSD stacked 0.79 -> 0.87, occluded 0.88 -> 0.97) - and keeps each cut as a
 // candidate that takes both pieces; the refine listed after it refines it, dedup then prefers it to the
 // pieces (larger at equal smoothness). Two objects seen through a gap are never joined: the gap
-// is free (mirror_twins splits those).
+// is free (mirror_twins splits those). Nor are two pieces with no colours in common, in a cloud
+// with colour: two pieces of one object show its colours, print included.
 #include <vector>
 
 #include "symmetry_segmentation/occupancy.h"
@@ -20,6 +21,12 @@
 #include "symmetry_segmentation/symmetry/symmetry_params.h"
 
 namespace symmetry_segmentation {
+
+/// The share of `points` (working-cloud indices) whose colour lies within `max_difference`
+/// (CIELAB, lightness at half weight) of a colour of `other` (at most 256 of its points, evenly
+/// picked). 0 when either is empty.
+float sharedColorShare(const Cloud& cloud, const std::vector<int>& points, const std::vector<int>& other,
+                       float max_difference);
 
 /// The plane halfway between the outer ends of `first` and `second` (working-cloud indices)
 /// along the line between their centroids, anchored on both, when they lie apart along that line

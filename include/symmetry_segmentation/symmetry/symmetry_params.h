@@ -225,6 +225,8 @@ struct OccluderGapParams {
   float min_piece_coverage = 0.8f;
   float max_turn_deg = 20.0f;
   float turn_step_deg = 10.0f;
+  float min_shared_color = 0.2f;
+  float max_color_difference = 15.0f;
 };
 
 inline void describeParameters(ParameterList<OccluderGapParams>& list) {
@@ -236,7 +238,11 @@ inline void describeParameters(ParameterList<OccluderGapParams>& list) {
       .add("max_turn_deg", &OccluderGapParams::max_turn_deg, 0.0, 90.0, "deg",
            "the plane is also tried turned about the up direction by up to this...")
       .add("turn_step_deg", &OccluderGapParams::turn_step_deg, 0.0, 90.0, "deg",
-           "...in steps of this (0: not turned); per pair the cut taking most of both pieces counts");
+           "...in steps of this (0: not turned); per pair the cut taking most of both pieces counts")
+      .add("min_shared_color", &OccluderGapParams::min_shared_color, 0.0, 1.0, "",
+           "two pieces of one object show its colours: in a cloud with colour, each piece has at least this share of its points in a colour the other shows too (a green ball and a pink can either side of an occluder are two objects); 0: colour not asked")
+      .add("max_color_difference", &OccluderGapParams::max_color_difference, 0.1, 200.0, "CIELAB",
+           "...colours closer than this are one (lightness at half weight)");
 }
 
 /// Stage filter: the paper's scores (eq. 13-14) and which candidates are kept; the scores and
