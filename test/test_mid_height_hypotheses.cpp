@@ -49,7 +49,7 @@ TEST(MidHeightHypotheses, ABoxOnTheTableProposesThePlaneHalfwayUpItAnchoredOnIts
   ss::Cloud cloud;
   std::vector<int> labels;
   addFace(cloud, labels, 0.0f, 0.1f, 0.0f, 0.08f, 0.12f, 1);
-  const auto hypotheses = ss::midHeightHypotheses(cloud, labels, kTable, ss::UprightHypothesisParams{}, kVoxel);
+  const auto hypotheses = ss::midHeightHypotheses(cloud, ss::surfaceShapes(cloud, labels), kTable, ss::UprightHypothesisParams{}, kVoxel);
   ASSERT_EQ(hypotheses.size(), 1u);
   EXPECT_NEAR(planeHeights(hypotheses)[0], 0.06f, 1e-4f);
   EXPECT_EQ(hypotheses[0].anchor.size(), cloud.size());
@@ -66,7 +66,7 @@ TEST(MidHeightHypotheses, ACanOnAWideBoxProposesThePlanesHalfwayUpEach) {
   // A box as high as the wide one, 30 cm away: no stack with the can.
   addFace(cloud, labels, 0.5f, 0.6f, 0.0f, 0.1f, 0.10f, 3);
   const auto heights =
-      planeHeights(ss::midHeightHypotheses(cloud, labels, kTable, ss::UprightHypothesisParams{}, kVoxel));
+      planeHeights(ss::midHeightHypotheses(cloud, ss::surfaceShapes(cloud, labels), kTable, ss::UprightHypothesisParams{}, kVoxel));
   ASSERT_EQ(heights.size(), 4u);
   EXPECT_NEAR(heights[0], 0.05f, 1e-4f);  // the wide box
   EXPECT_NEAR(heights[1], 0.05f, 1e-4f);  // the far box
@@ -92,7 +92,7 @@ TEST(MidHeightHypotheses, HeightsAreOverTheTablesFittedTop) {
   std::vector<int> labels;
   addFace(cloud, labels, 0.36f, 0.44f, -0.04f, 0.04f, 0.016f + 0.1f, 1);
   const auto hypotheses =
-      ss::midHeightHypotheses(cloud, labels, ss::TableTop(surface->plane(), surface), ss::UprightHypothesisParams{}, kVoxel);
+      ss::midHeightHypotheses(cloud, ss::surfaceShapes(cloud, labels), ss::TableTop(surface->plane(), surface), ss::UprightHypothesisParams{}, kVoxel);
   ASSERT_EQ(hypotheses.size(), 1u);
   // Halfway between the table under the box (1.6 cm) and its top (11.6 cm), over the plane z = 0.
   const Eigen::Vector3f on_plane(0.4f, 0.0f, 0.066f);
@@ -114,9 +114,9 @@ TEST(MidHeightHypotheses, LowFacesAndCurvedSurfacesProposeNothing) {
     }
   }
   ss::UprightHypothesisParams params;
-  EXPECT_TRUE(ss::midHeightHypotheses(cloud, labels, kTable, params, kVoxel).empty());
+  EXPECT_TRUE(ss::midHeightHypotheses(cloud, ss::surfaceShapes(cloud, labels), kTable, params, kVoxel).empty());
   params.min_mid_height = 0.02f;
-  EXPECT_EQ(ss::midHeightHypotheses(cloud, labels, kTable, params, kVoxel).size(), 1u);  // the book now
+  EXPECT_EQ(ss::midHeightHypotheses(cloud, ss::surfaceShapes(cloud, labels), kTable, params, kVoxel).size(), 1u);  // the book now
   params.min_mid_height = 0.0f;
-  EXPECT_TRUE(ss::midHeightHypotheses(cloud, labels, kTable, params, kVoxel).empty());
+  EXPECT_TRUE(ss::midHeightHypotheses(cloud, ss::surfaceShapes(cloud, labels), kTable, params, kVoxel).empty());
 }

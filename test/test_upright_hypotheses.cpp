@@ -71,7 +71,7 @@ TEST(UprightHypotheses, CylinderStripsProposeThePlaneBisectingWhatWasSeen) {
   const float half = 100.0f * static_cast<float>(M_PI) / 180.0f;
   addCylinderSide(cloud, labels, axis, 0.04f, 0.15f, centre - half, centre + half, 2, 1);
 
-  const auto hypotheses = ss::uprightHypotheses(landing(cloud), labels, kUp, ss::UprightHypothesisParams{});
+  const auto hypotheses = ss::uprightHypotheses(landing(cloud), ss::surfaceShapes(cloud, labels), kUp, ss::UprightHypothesisParams{});
   ASSERT_FALSE(hypotheses.empty());
   bool through_axis = false;
   for (const auto& h : hypotheses) {
@@ -109,7 +109,7 @@ TEST(UprightHypotheses, AMugsHandleOrientsThePlaneThroughItsAxis) {
     return Eigen::Vector2f(p.x() - axis.x(), p.y() - axis.y()).norm() > radius + 0.02f;
   };
   const auto planeThroughAxis = [&](const ss::UprightHypothesisParams& params) {
-    const auto hypotheses = ss::uprightHypotheses(evidence, labels, kUp, params);
+    const auto hypotheses = ss::uprightHypotheses(evidence, ss::surfaceShapes(cloud, labels), kUp, params);
     const auto through = std::find_if(hypotheses.begin(), hypotheses.end(), [&](const ss::SymmetryHypothesis& h) {
       return !h.anchor.empty() && distanceToPlane(h.plane, axis) < 0.003f;
     });
@@ -151,7 +151,7 @@ TEST(UprightHypotheses, AHandleFittedAsAThinCylinderOfItsOwnStillOrientsTheMugsP
   evidence.free_landing = [&](const Eigen::Vector3f& p) {
     return Eigen::Vector2f(p.x() - axis.x(), p.y() - axis.y()).norm() > radius + 0.02f;
   };
-  const auto hypotheses = ss::uprightHypotheses(evidence, labels, kUp, ss::UprightHypothesisParams{});
+  const auto hypotheses = ss::uprightHypotheses(evidence, ss::surfaceShapes(cloud, labels), kUp, ss::UprightHypothesisParams{});
   ASSERT_TRUE(std::any_of(hypotheses.begin(), hypotheses.end(), [&](const ss::SymmetryHypothesis& h) {
     return !h.anchor.empty() && distanceToPlane(h.plane, handle_axis) < 0.003f && labels[h.anchor.front()] == 2;
   })) << "the handle has no axis of its own (else this test shows nothing)";
@@ -172,7 +172,7 @@ TEST(UprightHypotheses, TwoTouchingCansMergedIntoOneSurfaceProposeAPlaneThroughE
   const float pi = static_cast<float>(M_PI);
   addCylinderSide(cloud, labels, left, 0.04f, 0.12f, -pi, 0.0f, 1, 1);     // the front halves,
   addCylinderSide(cloud, labels, right, 0.05f, 0.12f, -pi, 0.0f, 1, 1);    // seen from -y
-  const auto hypotheses = ss::uprightHypotheses(landing(cloud), labels, kUp, ss::UprightHypothesisParams{});
+  const auto hypotheses = ss::uprightHypotheses(landing(cloud), ss::surfaceShapes(cloud, labels), kUp, ss::UprightHypothesisParams{});
   for (const Eigen::Vector3f& axis : {left, right}) {
     const auto through = std::find_if(hypotheses.begin(), hypotheses.end(), [&](const ss::SymmetryHypothesis& h) {
       return distanceToPlane(h.plane, axis) < 0.004f && !h.anchor.empty();
@@ -206,7 +206,7 @@ TEST(UprightHypotheses, BoxFacesProposeTheirBisectors) {
     }
     labels.push_back(label);
   }
-  const auto hypotheses = ss::uprightHypotheses(landing(cloud), labels, kUp, ss::UprightHypothesisParams{});
+  const auto hypotheses = ss::uprightHypotheses(landing(cloud), ss::surfaceShapes(cloud, labels), kUp, ss::UprightHypothesisParams{});
   const Eigen::Vector3f centre(0.16f, 0.24f, 0.05f);
   EXPECT_TRUE(hasPlane(hypotheses, Eigen::Vector3f::UnitX(), centre, 2.0f, 0.005f));
   EXPECT_TRUE(hasPlane(hypotheses, Eigen::Vector3f::UnitY(), centre, 2.0f, 0.005f));
@@ -218,10 +218,10 @@ TEST(UprightHypotheses, SmallSurfacesAndUnlabelledPointsProposeNothing) {
   std::vector<int> labels;
   addCylinderSide(cloud, labels, Eigen::Vector3f::Zero(), 0.04f, 0.15f, 0.0f, 3.0f, 1, 1);
   std::vector<int> unlabelled(labels.size(), 0);
-  EXPECT_TRUE(ss::uprightHypotheses(landing(cloud), unlabelled, kUp, ss::UprightHypothesisParams{}).empty());
+  EXPECT_TRUE(ss::uprightHypotheses(landing(cloud), ss::surfaceShapes(cloud, unlabelled), kUp, ss::UprightHypothesisParams{}).empty());
   ss::UprightHypothesisParams strict;
   strict.min_surface_points = static_cast<int>(cloud.size()) + 1;
-  EXPECT_TRUE(ss::uprightHypotheses(landing(cloud), labels, kUp, strict).empty());
+  EXPECT_TRUE(ss::uprightHypotheses(landing(cloud), ss::surfaceShapes(cloud, labels), kUp, strict).empty());
   const ss::Cloud empty;
   EXPECT_TRUE(ss::uprightHypotheses(landing(empty), {}, kUp, ss::UprightHypothesisParams{}).empty());
 }
@@ -241,7 +241,7 @@ TEST(UprightHypotheses, ASurfaceWhoseNormalsMeetNoCommonAxisProposesNoAxisPlane)
   }
   ss::UprightHypothesisParams params;
   params.flat_curvature = 0.0f;  // only the axis test may propose
-  EXPECT_TRUE(ss::uprightHypotheses(landing(cloud), labels, kUp, params).empty());
+  EXPECT_TRUE(ss::uprightHypotheses(landing(cloud), ss::surfaceShapes(cloud, labels), kUp, params).empty());
 }
 
 TEST(UprightHypotheses, AppendDistinctSkipsNearEqualPlanes) {

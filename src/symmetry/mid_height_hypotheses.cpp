@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
+#include "symmetry_segmentation/quantile.h"
 #include "symmetry_segmentation/symmetry/symmetry_plane.h"
 
 namespace symmetry_segmentation {
@@ -15,66 +15,43 @@ namespace {
 constexpr float kDegToRad = static_cast<float>(M_PI) / 180.0f;
 
 struct HorizontalFace {
-  std::vector<int> points;
+  const SurfaceShape* surface = nullptr;
   float height = 0.0f;        ///< Median height over the table's plane.
   float table_height = 0.0f;  ///< The table top's height over its plane under the face's centroid.
   Eigen::AlignedBox2f extent;  ///< In the table plane's coordinates.
 };
 
-float median(std::vector<float> values) {
-  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
-}
-
 }  // namespace
 
-std::vector<SymmetryHypothesis> midHeightHypotheses(const Cloud& cloud, const std::vector<int>& labels,
+std::vector<SymmetryHypothesis> midHeightHypotheses(const Cloud& cloud, const std::vector<SurfaceShape>& surfaces,
                                                     const TableTop& table, const UprightHypothesisParams& params,
                                                     float reach) {
   std::vector<SymmetryHypothesis> result;
   const float norm = table.plane.head<3>().norm();
-  if (!(params.min_mid_height > 0.0f) || !(norm > 0.0f) || labels.size() != cloud.size()) return result;
+  if (!(params.min_mid_height > 0.0f) || !(norm > 0.0f)) return result;
   const Eigen::Vector3f up = table.plane.head<3>() / norm;
   const float offset = table.plane[3] / norm;
   const Eigen::Vector3f e1 = up.unitOrthogonal();
   const Eigen::Vector3f e2 = up.cross(e1);
   const float horizontal_cos = std::cos(params.face_tilt_deg * kDegToRad);
 
-  int max_label = 0;
-  for (int label : labels) max_label = std::max(max_label, label);
-  std::vector<std::vector<int>> surfaces(max_label + 1);
-  for (std::size_t i = 0; i < labels.size(); ++i) {
-    if (labels[i] > 0) surfaces[labels[i]].push_back(static_cast<int>(i));
-  }
   std::vector<HorizontalFace> faces;
-  for (std::vector<int>& points : surfaces) {
-    const int n = static_cast<int>(points.size());
-    if (n < params.min_surface_points) continue;
-    Eigen::Vector3f centroid = Eigen::Vector3f::Zero();
-    for (int i : points) centroid += cloud.points[i].getVector3fMap();
-    centroid /= static_cast<float>(n);
-    Eigen::Matrix3f covariance = Eigen::Matrix3f::Zero();
-    for (int i : points) {
-      const Eigen::Vector3f d = cloud.points[i].getVector3fMap() - centroid;
-      covariance += d * d.transpose();
-    }
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3f> pca(covariance);
-    const float curvature = pca.eigenvalues()(0) / std::max(1e-12f, pca.eigenvalues().sum());
-    if (!(curvature < params.flat_curvature) || !(std::fabs(pca.eigenvectors().col(0).dot(up)) > horizontal_cos)) {
+  for (const SurfaceShape& surface : surfaces) {
+    if (static_cast<int>(surface.points.size()) < params.min_surface_points) continue;
+    if (!(surface.curvature < params.flat_curvature) || !(std::fabs(surface.face_normal.dot(up)) > horizontal_cos)) {
       continue;
     }
     HorizontalFace face;
     std::vector<float> heights;
-    heights.reserve(points.size());
-    for (int i : points) {
+    heights.reserve(surface.points.size());
+    for (int i : surface.points) {
       const Eigen::Vector3f p = cloud.points[i].getVector3fMap();
       heights.push_back(up.dot(p) + offset);
       face.extent.extend(Eigen::Vector2f(e1.dot(p), e2.dot(p)));
     }
-    face.height = median(std::move(heights));
-    face.table_height = up.dot(centroid) + offset - table.height(centroid);
-    face.points = std::move(points);
+    face.height = quantileOf(heights, 0.5f);
+    face.table_height = up.dot(surface.centroid) + offset - table.height(surface.centroid);
+    face.surface = &surface;
     faces.push_back(std::move(face));
   }
 
@@ -83,8 +60,8 @@ std::vector<SymmetryHypothesis> midHeightHypotheses(const Cloud& cloud, const st
     h.plane.normal = up;
     h.plane.distance = offset - height;
     h.plane = canonicalPlane(h.plane);
-    h.support = static_cast<int>(face.points.size());
-    h.anchor = face.points;
+    h.support = static_cast<int>(face.surface->points.size());
+    h.anchor = face.surface->points;
     return h;
   };
   for (const HorizontalFace& face : faces) {

@@ -19,10 +19,6 @@ namespace {
 
 constexpr float kDegToRad = static_cast<float>(M_PI) / 180.0f;
 
-struct Surface {
-  std::vector<int> points;
-};
-
 SymmetryHypothesis verticalPlane(const Eigen::Vector3f& through, const Eigen::Vector3f& normal,
                                  const Eigen::Vector3f& up, int support) {
   SymmetryHypothesis h;
@@ -334,56 +330,35 @@ std::vector<SymmetryHypothesis> planesThroughAxis(const SceneEvidence& evidence,
 
 }  // namespace
 
-std::vector<SymmetryHypothesis> uprightHypotheses(const SceneEvidence& evidence, const std::vector<int>& labels,
+std::vector<SymmetryHypothesis> uprightHypotheses(const SceneEvidence& evidence, const std::vector<SurfaceShape>& surfaces,
                                                   const Eigen::Vector3f& up, const UprightHypothesisParams& params) {
   const Cloud& cloud = evidence.cloud();
-  int max_label = 0;
-  for (int label : labels) max_label = std::max(max_label, label);
-  std::vector<Surface> surfaces(max_label + 1);
-  for (std::size_t i = 0; i < labels.size(); ++i) {
-    if (labels[i] > 0) surfaces[labels[i]].points.push_back(static_cast<int>(i));
-  }
-
   std::vector<SymmetryHypothesis> result;
   std::vector<VerticalAxis> axes;
   const float vertical_sin = std::sin(params.face_tilt_deg * kDegToRad);
   const float horizontal_cos = std::cos(params.face_tilt_deg * kDegToRad);
-  for (const Surface& surface : surfaces) {
+  for (const SurfaceShape& surface : surfaces) {
     const int n = static_cast<int>(surface.points.size());
     if (n < params.min_surface_points) continue;
-    Eigen::Vector3f centroid = Eigen::Vector3f::Zero();
-    Eigen::Vector3f mean_normal = Eigen::Vector3f::Zero();
-    for (int i : surface.points) {
-      centroid += cloud.points[i].getVector3fMap();
-      mean_normal += cloud.points[i].getNormalVector3fMap();
-    }
-    centroid /= static_cast<float>(n);
-    Eigen::Matrix3f covariance = Eigen::Matrix3f::Zero();
-    for (int i : surface.points) {
-      const Eigen::Vector3f d = cloud.points[i].getVector3fMap() - centroid;
-      covariance += d * d.transpose();
-    }
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3f> pca(covariance);  // Ascending eigenvalues.
-    const float curvature = pca.eigenvalues()(0) / std::max(1e-12f, pca.eigenvalues().sum());
-    const Eigen::Vector3f face_normal = pca.eigenvectors().col(0);
+    const Eigen::Vector3f& centroid = surface.centroid;
+    const Eigen::Vector3f& face_normal = surface.face_normal;
 
     // A narrow strip of a curved surface looks flat to PCA; it proposes both kinds of plane
     // (the bisector of its chord passes through the axis as well).
-    if (curvature < params.flat_curvature) {
+    if (surface.curvature < params.flat_curvature) {
       const float tilt = std::fabs(face_normal.dot(up));
       if (tilt < vertical_sin) {
         result.push_back(verticalPlane(centroid, up.cross(face_normal), up, n));
       } else if (tilt > horizontal_cos) {
         // Principal axes of the face seen from above.
-        Eigen::Matrix3f flat = covariance;
         const Eigen::Matrix3f horizontal = Eigen::Matrix3f::Identity() - up * up.transpose();
-        flat = horizontal * flat * horizontal;
+        const Eigen::Matrix3f flat = horizontal * surface.scatter * horizontal;
         const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3f> axes(flat);
         result.push_back(verticalPlane(centroid, axes.eigenvectors().col(2), up, n));
         result.push_back(verticalPlane(centroid, axes.eigenvectors().col(1), up, n));
       }
     }
-    const bool flat = mean_normal.norm() / static_cast<float>(n) > std::cos(params.flat_normal_spread_deg * kDegToRad);
+    const bool flat = surface.mean_normal.norm() > std::cos(params.flat_normal_spread_deg * kDegToRad);
     if (flat) continue;
     for (VerticalAxis& axis : fitVerticalAxes(cloud, surface.points, up, params)) axes.push_back(std::move(axis));
   }
@@ -417,11 +392,12 @@ void UprightStage::run(PipelineState& state) const {
   std::size_t added = 0;
   if (state.up) {
     const std::size_t before = state.hypotheses.size();
-    appendDistinctHypotheses(state.hypotheses, uprightHypotheses(*state.evidence, state.surfaces, *state.up, params_),
+    const std::vector<SurfaceShape> shapes = surfaceShapes(*state.cloud, state.surfaces);
+    appendDistinctHypotheses(state.hypotheses, uprightHypotheses(*state.evidence, shapes, *state.up, params_),
                              params_.distinct_angle_deg, params_.distinct_distance);
     if (state.prepared.has_table) {
-      const std::vector<SymmetryHypothesis> mid = midHeightHypotheses(
-          *state.cloud, state.surfaces, state.prepared.tableTop(), params_, voxel_size_);
+      const std::vector<SymmetryHypothesis> mid =
+          midHeightHypotheses(*state.cloud, shapes, state.prepared.tableTop(), params_, voxel_size_);
       state.hypotheses.insert(state.hypotheses.end(), mid.begin(), mid.end());
     }
     added = state.hypotheses.size() - before;

@@ -13,6 +13,7 @@
 #include "symmetry_segmentation/scene.h"
 #include "symmetry_segmentation/symmetry/scene_evidence.h"
 #include "symmetry_segmentation/symmetry/stage.h"
+#include "symmetry_segmentation/symmetry/surface_shapes.h"
 #include "symmetry_segmentation/symmetry/symmetry_hypotheses.h"
 #include "symmetry_segmentation/symmetry/symmetry_params.h"
 
@@ -42,11 +43,10 @@ std::vector<VerticalAxis> fitVerticalAxes(const Cloud& cloud, const std::vector<
 bool coversAnArc(const Cloud& cloud, const std::vector<int>& points, const Eigen::Vector3f& up,
                  const UprightHypothesisParams& params);
 
-/// Planes proposed from each merged surface of `evidence.cloud()` (labels from
-/// mergedSegmentLabels; 0 = none). `up` is the unit normal of the supporting plane. Each
+/// Planes proposed from each merged surface of `evidence.cloud()` (from surfaceShapes). `up` is the unit normal of the supporting plane. Each
 /// hypothesis' support is its surface's size; planes through an axis are anchored on the axis'
 /// surface. Deterministic, ordered by surface label.
-std::vector<SymmetryHypothesis> uprightHypotheses(const SceneEvidence& evidence, const std::vector<int>& labels,
+std::vector<SymmetryHypothesis> uprightHypotheses(const SceneEvidence& evidence, const std::vector<SurfaceShape>& surfaces,
                                                   const Eigen::Vector3f& up, const UprightHypothesisParams& params);
 
 /// `extra` hypotheses appended to `base` unless near-equal (angle and offset) to one already there.
