@@ -414,6 +414,33 @@ TEST(Completion, ABoxRestingOnTheTableReachesDownToItOneStackedHigherDoesNot) {
   EXPECT_FLOAT_EQ(ss::restingBox(tilted, table, 0.02f).size.z(), 0.1f);
 }
 
+TEST(Completion, ABoxRestingWhereTheTableBendsUpReachesDownToItsTopNotToItsPlane) {
+  // The table rises by 0.1 x^2: 2 cm at x = 0.45, where a box's foot was cut 1 cm over the top.
+  ss::Cloud table_points;
+  std::vector<int> indices;
+  for (float x = -0.5f; x <= 0.5f; x += 0.005f) {
+    for (float y = -0.4f; y <= 0.4f; y += 0.005f) {
+      ss::PointT p;
+      p.x = x; p.y = y; p.z = 0.1f * x * x;
+      indices.push_back(static_cast<int>(table_points.size()));
+      table_points.push_back(p);
+    }
+  }
+  const ss::PlaneCoefficients plane(0.0f, 0.0f, 1.0f, 0.0f);
+  const auto surface = ss::TableSurface::fit(table_points, indices, plane, 0.04f, /*facing_up=*/false, 0.02f);
+  ASSERT_TRUE(surface);
+  const float top = 0.1f * 0.45f * 0.45f;
+  ss::ObjectBox cut;
+  cut.center = Eigen::Vector3f(0.45f, 0.0f, top + 0.01f + 0.05f);
+  cut.size = Eigen::Vector3f(0.06f, 0.06f, 0.1f);
+  // Measured from the plane its bottom is 3 cm up: it stands on something else and stays.
+  EXPECT_FLOAT_EQ(ss::restingBox(cut, plane, 0.02f).size.z(), 0.1f);
+  // Measured from the table's top it is 1 cm up, and reaches down to the top, not into the table.
+  const ss::ObjectBox resting = ss::restingBox(cut, ss::TableTop(plane, surface), 0.02f);
+  EXPECT_NEAR(resting.center.z() - 0.5f * resting.size.z(), top, 0.0015f);
+  EXPECT_NEAR(resting.center.z() + 0.5f * resting.size.z(), top + 0.11f, 1e-5f) << "its top stays";
+}
+
 TEST(Completion, AnObjectOnABookStandsOnItOneTouchingANeighbourDoesNot) {
   // A 10 cm box whose foot the table's cut took (it starts 2.5 cm up), its box from its points.
   ss::Cloud cloud;

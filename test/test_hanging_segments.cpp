@@ -88,7 +88,7 @@ TEST(HangingSegments, AShelfRestsOnNothingObjectsOnTheTableOrOnEachOtherDo) {
   EXPECT_FALSE(ss::restsOnNothing(low, slab, kTable, kMargin, kCell));
   // Degenerate input: no points, no plane, indices out of range.
   EXPECT_FALSE(ss::restsOnNothing(cloud, {}, kTable, kMargin, kCell));
-  EXPECT_FALSE(ss::restsOnNothing(cloud, shelf, ss::PlaneCoefficients::Zero(), kMargin, kCell));
+  EXPECT_FALSE(ss::restsOnNothing(cloud, shelf, ss::PlaneCoefficients(ss::PlaneCoefficients::Zero()), kMargin, kCell));
   EXPECT_FALSE(ss::restsOnNothing(cloud, {-1, static_cast<int>(cloud.size())}, kTable, kMargin, kCell));
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <random>
 
+#include "symmetry_segmentation/table_grid.h"
 #include "symmetry_segmentation/table_surface.h"
 
 namespace ss = symmetry_segmentation;
@@ -51,6 +52,23 @@ TEST(TableSurface, FollowsATableThatBendsAwayFromItsPlane) {
     const Eigen::Vector3f p(x, 0.1f, table.tableHeight(x));
     EXPECT_NEAR(surface->height(p), 0.0f, 0.0015f) << "at x = " << x;
   }
+}
+
+TEST(TableGrid, HeightsAreOverTheFittedTopCellsOnThePlane) {
+  // What lies over or under a footprint (hanging and rising segments, table sightings) is
+  // measured like everything else: from the bending top, not from its plane.
+  const Table table(0.032f, false);
+  const ss::PlaneCoefficients plane(0, 0, 2, 0);  // any length of normal
+  const auto surface = ss::TableSurface::fit(table.cloud, table.indices, plane, 0.01f, true, 0.03f);
+  ASSERT_TRUE(surface);
+  const ss::TableGrid over_plane(plane, 0.05f);
+  const ss::TableGrid over_top(ss::TableTop(plane, surface), 0.05f);
+  const Eigen::Vector3f far_end(0.45f, 0.1f, table.tableHeight(0.45f) + 0.03f);  // 3 cm over the top there
+  EXPECT_NEAR(over_plane.height(far_end), 0.03f + table.tableHeight(0.45f), 1e-5f);
+  EXPECT_NEAR(over_top.height(far_end), 0.03f, 0.0015f);
+  EXPECT_EQ(over_top.cellOf(far_end), over_plane.cellOf(far_end));
+  EXPECT_EQ(over_top.cellOf(far_end), over_top.cellOf(Eigen::Vector3f(0.45f, 0.1f, -1.0f)));  // seen from above
+  EXPECT_NEAR(over_top.up().z(), 1.0f, 1e-6f);
 }
 
 TEST(TableSurface, ABoardLyingOnTheTableStaysAboveIt) {

@@ -1,14 +1,16 @@
 #pragma once
-// Heights over the table and square cells on it: where a point lies seen from above. Shared by
-// the tests that ask what lies over or under a segment's footprint.
+// Heights over the table's top and square cells on its plane: where a point lies seen from
+// above. Shared by the tests that ask what lies over or under a segment's footprint.
 
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <utility>
 
 #include <Eigen/Core>
 
 #include "symmetry_segmentation/scene.h"
+#include "symmetry_segmentation/table_surface.h"
 
 namespace symmetry_segmentation {
 
@@ -16,16 +18,20 @@ class TableGrid {
  public:
   using Cell = std::pair<std::int64_t, std::int64_t>;
 
-  /// `table_plane` need not have a unit normal; `cell` > 0 (m).
-  TableGrid(const PlaneCoefficients& table_plane, float cell)
-      : up_(table_plane.head<3>().normalized()),
-        offset_(table_plane[3] / table_plane.head<3>().norm()),
+  /// Cells on `table.plane` (normal up, need not be unit); heights over its surface where fitted,
+  /// as every stage measures them. `cell` > 0 (m).
+  TableGrid(const TableTop& table, float cell)
+      : up_(table.plane.head<3>().normalized()),
+        offset_(table.plane[3] / table.plane.head<3>().norm()),
         e1_(up_.unitOrthogonal()),
         e2_(up_.cross(e1_)),
-        cell_(cell) {}
+        cell_(cell),
+        surface_(table.surface) {}
 
-  /// Signed height over the table (m).
-  float height(const Eigen::Vector3f& p) const { return up_.dot(p) + offset_; }
+  /// Signed height over the table's top (m).
+  float height(const Eigen::Vector3f& p) const { return surface_ ? surface_->height(p) : up_.dot(p) + offset_; }
+  /// The plane's unit normal.
+  const Eigen::Vector3f& up() const { return up_; }
   Cell cellOf(const Eigen::Vector3f& p) const {
     return {static_cast<std::int64_t>(std::floor(e1_.dot(p) / cell_)), static_cast<std::int64_t>(std::floor(e2_.dot(p) / cell_))};
   }
@@ -40,6 +46,7 @@ class TableGrid {
   float offset_;
   Eigen::Vector3f e1_, e2_;
   float cell_;
+  std::optional<TableSurface> surface_;
 };
 
 }  // namespace symmetry_segmentation

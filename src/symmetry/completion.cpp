@@ -275,9 +275,10 @@ bool planeNearPoints(const Cloud& cloud, const std::vector<int>& points, const S
 }
 
 std::vector<Eigen::Vector3f> groundedSidePoints(const Cloud& cloud, const std::vector<int>& points,
-                                                const PlaneCoefficients& support, float cell,
+                                                const TableTop& support, float cell,
                                                 const std::function<bool(const Eigen::Vector3f&)>& hidden) {
-  const Eigen::Vector3f up = support.head<3>();
+  if (!(support.plane.head<3>().norm() > 0.0f)) return {};
+  const Eigen::Vector3f up = support.plane.head<3>().normalized();
   const Eigen::Vector3f u = up.unitOrthogonal();
   const Eigen::Vector3f v = up.cross(u);
   std::map<std::pair<long, long>, int> lowest;  // column -> index of its lowest point
@@ -296,7 +297,7 @@ std::vector<Eigen::Vector3f> groundedSidePoints(const Cloud& cloud, const std::v
     if (!normal.allFinite() || std::fabs(normal.dot(up)) > kMaxSideNormalUp) continue;  // a top or bottom face
     ++sides;
     const Eigen::Vector3f start = cloud.points[i].getVector3fMap();
-    const float height = start.dot(up) + support[3];
+    const float height = support.height(start);
     column_points.clear();
     bool reached = false;
     for (float drop = cell; height - drop > 0.0f; drop += cell) {
@@ -332,15 +333,15 @@ ObjectBox groundedBox(ObjectBox box, const std::vector<Eigen::Vector3f>& grounde
   return box;
 }
 
-ObjectBox restingBox(ObjectBox box, const PlaneCoefficients& support, float reach) {
-  const float norm = support.head<3>().norm();
+ObjectBox restingBox(ObjectBox box, const TableTop& support, float reach) {
+  const float norm = support.plane.head<3>().norm();
   if (!(norm > 0.0f)) return box;
   const Eigen::Vector3f z = box.axes.col(2);
   const Eigen::Vector3f bottom_centre = box.center - 0.5f * box.size.z() * z;
-  const float cos_up = support.head<3>().dot(z) / norm;
+  const float cos_up = support.plane.head<3>().dot(z) / norm;
   if (cos_up < kUprightBoxCos) return box;  // a box not along the support's up
   // How far down along z the support is from the bottom's centre.
-  const float gap = (support.head<3>().dot(bottom_centre) + support[3]) / norm / cos_up;
+  const float gap = support.height(bottom_centre) / cos_up;
   if (!(gap > 0.0f && gap < reach)) return box;
   box.center -= 0.5f * gap * z;
   box.size.z() += gap;
@@ -464,13 +465,13 @@ ObjectBox visibleBox(const PipelineState& state, const CandidateSegment& segment
 }  // namespace
 
 void CompletionStage::run(PipelineState& state) const {
-  std::optional<PlaneCoefficients> table;
-  if (state.prepared.has_table) table = state.prepared.table_plane;
+  std::optional<TableTop> table;
+  if (state.prepared.has_table) table = state.prepared.tableTop();
   const Cloud& cloud = *state.cloud;
   // Unobserved space (not free) above the table (which hides nothing of an object standing on
   // it) with no observed point within a voxel but those of `own` (sorted; may be null).
   const auto unobserved = [&](const Eigen::Vector3f& q, const std::vector<int>* own) {
-    if (table && table->head<3>().dot(q) + (*table)[3] < 0.0f) return false;
+    if (table && table->height(q) < 0.0f) return false;
     if (state.occupancy->classify(q) == Occupancy::Free) return false;
     std::vector<int> near;
     std::vector<float> squared;

@@ -26,10 +26,10 @@ constexpr float kProbeStep = 0.03f;
 
 }  // namespace
 
-bool restsOnNothing(const Cloud& cloud, const std::vector<int>& points, const PlaneCoefficients& table_plane,
+bool restsOnNothing(const Cloud& cloud, const std::vector<int>& points, const TableTop& table,
                     float table_margin, float cell) {
-  if (!(table_plane.head<3>().norm() > 0.0f) || !(cell > 0.0f)) return false;
-  const TableGrid grid(table_plane, cell);
+  if (!(table.plane.head<3>().norm() > 0.0f) || !(cell > 0.0f)) return false;
+  const TableGrid grid(table, cell);
   std::vector<int> usable;  // sorted, for the membership test below
   std::vector<float> heights;
   for (int i : points) {
@@ -61,11 +61,11 @@ bool restsOnNothing(const Cloud& cloud, const std::vector<int>& points, const Pl
 }
 
 std::optional<float> freeShareUnder(const Cloud& cloud, const std::vector<int>& points,
-                                    const PlaneCoefficients& table_plane, float table_margin,
+                                    const TableTop& table, float table_margin,
                                     const OccupancyMap& occupancy) {
-  if (!(table_plane.head<3>().norm() > 0.0f)) return std::nullopt;
-  const TableGrid grid(table_plane, 1.0f);
-  const Eigen::Vector3f up = table_plane.head<3>().normalized();
+  if (!(table.plane.head<3>().norm() > 0.0f)) return std::nullopt;
+  const TableGrid grid(table, 1.0f);
+  const Eigen::Vector3f& up = grid.up();
   std::vector<int> usable;
   std::vector<float> heights;
   for (int i : points) {

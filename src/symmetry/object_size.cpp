@@ -121,8 +121,8 @@ std::vector<int> largestPlanePoints(const Cloud::ConstPtr& cloud, const std::vec
   return std::vector<int>(inliers.indices.begin(), inliers.indices.end());
 }
 
-TableSightings::TableSightings(const Cloud& input, const PlaneCoefficients& table_plane, float band, float cell)
-    : grid_(table_plane, cell) {
+TableSightings::TableSightings(const Cloud& input, const TableTop& table, float band, float cell)
+    : grid_(table, cell) {
   for (const PointT& point : input) {
     if (!isUsablePoint(point)) continue;
     const Eigen::Vector3f p = point.getVector3fMap();
@@ -168,7 +168,7 @@ void ObjectSizeStage::run(PipelineState& state) const {
   // Made when first asked.
   std::optional<TableSightings> table_seen;
   const auto tableSeen = [&]() -> const TableSightings& {
-    if (!table_seen) table_seen.emplace(*state.scene->cloud, state.prepared.table_plane, state.prepared.table_margin, voxel_size_);
+    if (!table_seen) table_seen.emplace(*state.scene->cloud, table_top, state.prepared.table_margin, voxel_size_);
     return *table_seen;
   };
   std::size_t thin_kept = 0;
@@ -213,7 +213,7 @@ void ObjectSizeStage::run(PipelineState& state) const {
                              state.scene != nullptr && state.scene->cloud;
   std::size_t hanging = 0;
   const auto hangs = [&](const CandidateSegment& segment) {
-    if (!restsOnNothing(*state.cloud, segment.points, state.prepared.table_plane, state.prepared.table_margin,
+    if (!restsOnNothing(*state.cloud, segment.points, table_top, state.prepared.table_margin,
                         voxel_size_)) {
       return false;
     }
@@ -225,7 +225,7 @@ void ObjectSizeStage::run(PipelineState& state) const {
       result = seen && *seen >= params_.min_table_seen_under_raised;
     }
     if (!result && params_.min_free_under_raised > 0.0f && state.occupancy) {
-      const std::optional<float> free = freeShareUnder(*state.cloud, segment.points, state.prepared.table_plane,
+      const std::optional<float> free = freeShareUnder(*state.cloud, segment.points, table_top,
                                                        state.prepared.table_margin, *state.occupancy);
       result = free && *free >= params_.min_free_under_raised;
     }
@@ -237,9 +237,9 @@ void ObjectSizeStage::run(PipelineState& state) const {
   std::optional<BelowTableSightings> below;  // made when first asked
   std::size_t rising = 0;
   const auto rises = [&](const CandidateSegment& segment) {
-    if (!below) below.emplace(*state.scene->cloud, state.prepared.table_plane);
+    if (!below) below.emplace(*state.scene->cloud, table_top);
     const bool result =
-        risesFromBelowTable(*state.cloud, segment.points, state.prepared.table_plane, state.prepared.table_margin,
+        risesFromBelowTable(*state.cloud, segment.points, table_top, state.prepared.table_margin,
                             *state.prepared.support_polygon, *below, params_.min_seen_below_share);
     rising += result ? 1 : 0;
     return result;

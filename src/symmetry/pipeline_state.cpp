@@ -73,7 +73,7 @@ SegmentCompletion completedObject(const PipelineState& state, const CandidateSeg
   completion.box = groundedBox(completedBox(visible, completion.points, up, kAddedPointsTrim, state.prepared.table_noise),
                                candidate.grounded);
   if (candidate.rests_on_support && state.prepared.has_table) {
-    completion.box = restingBox(completion.box, state.prepared.table_plane, kTableBandMargins * state.prepared.table_margin);
+    completion.box = restingBox(completion.box, state.prepared.tableTop(), kTableBandMargins * state.prepared.table_margin);
   }
   completion.points.insert(completion.points.end(), candidate.grounded.begin(), candidate.grounded.end());
   Eigen::Vector3f centroid = Eigen::Vector3f::Zero();

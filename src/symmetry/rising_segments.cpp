@@ -22,8 +22,8 @@ constexpr float kMinBeyondShare = 0.25f;
 
 }  // namespace
 
-BelowTableSightings::BelowTableSightings(const Cloud& input, const PlaneCoefficients& table_plane)
-    : grid_(table_plane, kCell) {
+BelowTableSightings::BelowTableSightings(const Cloud& input, const TableTop& table)
+    : grid_(table, kCell) {
   for (const PointT& point : input) {
     if (!isUsablePoint(point)) continue;
     const Eigen::Vector3f p = point.getVector3fMap();
@@ -45,11 +45,11 @@ bool BelowTableSightings::seenUnder(const Eigen::Vector3f& point) const {
   return !seen_.empty() && near(seen_);
 }
 
-bool risesFromBelowTable(const Cloud& cloud, const std::vector<int>& points, const PlaneCoefficients& table_plane,
+bool risesFromBelowTable(const Cloud& cloud, const std::vector<int>& points, const TableTop& table,
                          float table_margin, const SupportPolygon& support, const BelowTableSightings& below,
                          float min_seen_below_share) {
-  if (!(table_plane.head<3>().norm() > 0.0f) || !(min_seen_below_share > 0.0f)) return false;
-  const TableGrid grid(table_plane, 1.0f);
+  if (!(table.plane.head<3>().norm() > 0.0f) || !(min_seen_below_share > 0.0f)) return false;
+  const TableGrid grid(table, 1.0f);
   std::size_t usable = 0, beyond = 0, low = 0, low_over_below = 0;
   for (int i : points) {
     if (i < 0 || static_cast<std::size_t>(i) >= cloud.size() || !isUsablePoint(cloud[i])) continue;

@@ -22,6 +22,7 @@
 #include "symmetry_segmentation/object_box.h"
 #include "symmetry_segmentation/scene.h"
 #include "symmetry_segmentation/segmentation_result.h"
+#include "symmetry_segmentation/table_surface.h"
 #include "symmetry_segmentation/symmetry/scene_evidence.h"
 #include "symmetry_segmentation/symmetry/stage.h"
 #include "symmetry_segmentation/symmetry/symmetry_params.h"
@@ -100,12 +101,12 @@ std::vector<Eigen::Vector3f> roundPoints(const std::vector<Eigen::Vector3f>& sur
 
 /// Where an object's side is seen only down to some height above the support (its foot behind
 /// something in front of it), the side under each `cell`-wide column of `points` (indices into
-/// `cloud`, with normals) whose lowest point faces sideways, carried straight down to the
-/// `support` (oriented up) in `cell` steps - if `hidden` accepts every step until within 1.5 cells
-/// of it. Objects stand on something: on the support, or on what blocks the way down (seen, or
-/// free space: no column is added there).
+/// `cloud`, with normals) whose lowest point faces sideways, carried straight down (along the
+/// support plane's normal, oriented up) to the `support`'s top in `cell` steps - if `hidden`
+/// accepts every step until within 1.5 cells of it. Objects stand on something: on the support,
+/// or on what blocks the way down (seen, or free space: no column is added there).
 std::vector<Eigen::Vector3f> groundedSidePoints(const Cloud& cloud, const std::vector<int>& points,
-                                                const PlaneCoefficients& support, float cell,
+                                                const TableTop& support, float cell,
                                                 const std::function<bool(const Eigen::Vector3f&)>& hidden);
 
 /// `box` (its z along the support's up, as objectBox makes it) reaching down to the lowest of
@@ -113,11 +114,11 @@ std::vector<Eigen::Vector3f> groundedSidePoints(const Cloud& cloud, const std::v
 ObjectBox groundedBox(ObjectBox box, const std::vector<Eigen::Vector3f>& grounded);
 
 /// `box` (its z along the support's up) of an object resting on the `support` (oriented up):
-/// when its bottom is over the support by less than `reach`, it reaches down to the support.
+/// when its bottom is over the support's top by less than `reach`, it reaches down to it.
 /// The table's cut takes an object's lowest centimetre or so with the table, and an object
 /// standing there goes on down to it. The caller tells whether it stands on the support
 /// (ObjectColumns::standsOn).
-ObjectBox restingBox(ObjectBox box, const PlaneCoefficients& support, float reach);
+ObjectBox restingBox(ObjectBox box, const TableTop& support, float reach);
 
 /// The `cell`-wide columns (across the support's up) that hold an object's points, for asking
 /// whether it stands on another object: the columns are gathered once, then each other segment is

@@ -15,23 +15,24 @@
 #include <vector>
 
 #include "symmetry_segmentation/scene.h"
+#include "symmetry_segmentation/table_surface.h"
 
 namespace symmetry_segmentation {
 
-/// Whether `points` of `cloud` rest on nothing (see above): raised off `table_plane` by more than
+/// Whether `points` of `cloud` rest on nothing (see above): raised off the table's top by more than
 /// three `cell`s over `table_margin`, and no other point of `cloud` one to five cells under their
 /// base over their footprint (cells of side `cell`, grown by one). Indices out of range and points
 /// that are not finite are left out.
-bool restsOnNothing(const Cloud& cloud, const std::vector<int>& points, const PlaneCoefficients& table_plane,
+bool restsOnNothing(const Cloud& cloud, const std::vector<int>& points, const TableTop& table,
                     float table_margin, float cell);
 
 class OccupancyMap;
 
 /// The share of probes straight under `points` of `cloud` - every 3 cm from 2 cm over
-/// `table_margin` to 2 cm under their base (2nd percentile of their heights over `table_plane`)
+/// `table_margin` to 2 cm under their base (2nd percentile of their heights over the top)
 /// - that `occupancy` classifies as free. None when there is no room for a probe.
 std::optional<float> freeShareUnder(const Cloud& cloud, const std::vector<int>& points,
-                                    const PlaneCoefficients& table_plane, float table_margin,
+                                    const TableTop& table, float table_margin,
                                     const OccupancyMap& occupancy);
 
 }  // namespace symmetry_segmentation

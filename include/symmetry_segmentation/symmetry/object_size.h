@@ -32,10 +32,10 @@ namespace symmetry_segmentation {
 float topHeight(const Cloud& cloud, const std::vector<int>& points, const TableTop& table);
 
 /// Where the table itself was seen: the cells (side `cell`, on a grid in the table's plane) over
-/// which the input cloud has points within `band` of the plane (either side).
+/// which the input cloud has points within `band` of the table's top (either side).
 class TableSightings {
  public:
-  TableSightings(const Cloud& input, const PlaneCoefficients& table_plane, float band, float cell);
+  TableSightings(const Cloud& input, const TableTop& table, float band, float cell);
   /// The share of the inner cells of the footprint of `points` (cells whose 8 neighbours hold
   /// points too) in which the table was seen; none when the footprint has no inner cell.
   std::optional<float> seenShareUnder(const Cloud& cloud, const std::vector<int>& points) const;

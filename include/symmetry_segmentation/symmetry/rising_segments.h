@@ -24,7 +24,7 @@ namespace symmetry_segmentation {
 /// plane over which `input` has points that deep.
 class BelowTableSightings {
  public:
-  BelowTableSightings(const Cloud& input, const PlaneCoefficients& table_plane);
+  BelowTableSightings(const Cloud& input, const TableTop& table);
   /// Whether such a surface lies under `point`: in its cell or one next to it.
   bool seenUnder(const Eigen::Vector3f& point) const;
 
@@ -37,7 +37,7 @@ class BelowTableSightings {
 /// them at least lie beyond `support`'s table points (not SupportPolygon::overTable), and of their
 /// points within 2 cm over `table_margin` (at least 5), `min_seen_below_share` at least have a
 /// surface of `below` under them. Never with `min_seen_below_share` 0.
-bool risesFromBelowTable(const Cloud& cloud, const std::vector<int>& points, const PlaneCoefficients& table_plane,
+bool risesFromBelowTable(const Cloud& cloud, const std::vector<int>& points, const TableTop& table,
                          float table_margin, const SupportPolygon& support, const BelowTableSightings& below,
                          float min_seen_below_share);
 
