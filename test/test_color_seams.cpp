@@ -412,3 +412,41 @@ TEST(ColorSeams, APieceLikeNoNeighbourStays) {
   EXPECT_EQ(scene.segments[0].points, before[0].points);
   EXPECT_EQ(scene.segments[1].points, before[1].points);
 }
+
+namespace {
+
+// A 12 x 8 x 10 cm box coloured red left of `boundary(z)` and blue right of it, on every face.
+ss::Cloud twoColourBox(float (*boundary)(float z)) {
+  ss::Cloud cloud = boxSurfaces({Box{{-0.06f, -0.04f, 0.0f}, {0.06f, 0.04f, 0.1f}, kRed}});
+  for (ss::PointT& p : cloud) {
+    if (p.x < boundary(p.z)) continue;
+    p.r = kBlue[0];
+    p.g = kBlue[1];
+    p.b = kBlue[2];
+  }
+  return cloud;
+}
+
+}  // namespace
+
+TEST(ColorSeams, ASeamThatStepsAcrossTheFacesIsPrintNotWhereObjectsMeet) {
+  // Two objects meet flush on one plane, their contact: red and blue halves split at x = 0 are
+  // two boxes of one depth pushed together. Where the colour edge steps 3 cm halfway up, it is
+  // print on one box: no contact plane runs through it. Both halves mirror onto themselves
+  // about the front-to-back plane either way.
+  const ss::SymmetryPlane front_to_back = plane(Eigen::Vector3f::UnitY(), 0.0f);
+  const ss::Cloud flush = twoColourBox([](float) { return 0.0f; });
+  std::vector<ss::CandidateSegment> segments = {everything(flush, front_to_back)};
+  EXPECT_EQ(split(segments, flush, {}, withFlushSeams()), 1u);
+  EXPECT_EQ(segments.size(), 2u);
+
+  const ss::Cloud stepped = twoColourBox([](float z) { return z < 0.05f ? 0.0f : 0.03f; });
+  segments = {everything(stepped, front_to_back)};
+  EXPECT_EQ(split(segments, stepped, {}, withFlushSeams()), 0u);
+  EXPECT_EQ(segments.size(), 1u);
+  // Without the contact-plane test the print's edge parts the box.
+  ss::ColorSeamParams any_seam = withFlushSeams();
+  any_seam.max_flush_seam_offset = 0.0f;
+  segments = {everything(stepped, front_to_back)};
+  EXPECT_EQ(split(segments, stepped, {}, any_seam), 1u);
+}

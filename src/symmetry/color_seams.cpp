@@ -133,6 +133,25 @@ SeamShape seamShape(const std::vector<int>& ends, const std::vector<int>& points
   return shape;
 }
 
+// How far the middles of a seam's links lie from the plane through them (RMS, m). Two objects
+// meet flush on one plane, their contact (boxes in a row, a box on a box of its footprint); a
+// print's colour edge steps and wanders across an object's faces.
+float seamOffPlane(const std::vector<int>& ends, const std::vector<int>& points, const Cloud& cloud) {
+  std::vector<Eigen::Vector3f> middles;
+  middles.reserve(ends.size() / 2);
+  Eigen::Vector3f mean = Eigen::Vector3f::Zero();
+  for (std::size_t e = 0; e + 1 < ends.size(); e += 2) {
+    middles.push_back(0.5f * (cloud[points[ends[e]]].getVector3fMap() + cloud[points[ends[e + 1]]].getVector3fMap()));
+    mean += middles.back();
+  }
+  if (middles.empty()) return 0.0f;
+  mean /= static_cast<float>(middles.size());
+  Eigen::Matrix3f scatter = Eigen::Matrix3f::Zero();
+  for (const Eigen::Vector3f& m : middles) scatter += (m - mean) * (m - mean).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3f> solver(scatter / static_cast<float>(middles.size()));
+  return std::sqrt(std::max(0.0f, solver.eigenvalues()(0)));
+}
+
 // Whether a seam runs right across both parts it divides (their positions in `points`: `of_a`,
 // `of_b`): in some direction within the seam's plane it spans most of each part's extent. Where
 // a box stands on a box of its footprint the seam is the whole footprint's outline; between
@@ -288,8 +307,12 @@ int objectsAtColorSeams(const std::vector<int>& points, const std::vector<Eigen:
     return standsAlone(pieces[a], {seamMidPlane(seam, positions[a], positions[b], points, cloud)}, found, evidence,
                        params);
   };
-  // A flat seam parts two objects where it runs right across both and each stands alone.
+  // A flat seam parts two objects where it lies on one plane, runs right across both and each
+  // stands alone.
   const auto flush_objects = [&](const Seam& seam, int a, int b) {
+    if (params.max_flush_seam_offset > 0.0f && seamOffPlane(seam.ends, points, cloud) > params.max_flush_seam_offset) {
+      return false;
+    }
     const SeamShape shape = seamShape(seam.ends, points, cloud);
     return seamSpansBoth(seam.ends, shape, positions[a], positions[b], points, cloud, params.min_seam_span) &&
            stands_alone_at(shape, a, b) && stands_alone_at(shape, b, a);

@@ -366,6 +366,7 @@ struct ColorSeamParams {
   float min_self_mirrored_fraction = 0.7f;
   float max_piece_plane_share = 0.8f;
   float min_seam_span = 0.7f;
+  float max_flush_seam_offset = 0.006f;
   float min_plane_share = 0.3f;
   bool split_flush_seams = true;
   // From symmetry.filter (min_segment_points, smooth_normal_angle_deg): not parameters of their own.
@@ -394,6 +395,8 @@ inline void describeParameters(ParameterList<ColorSeamParams>& list) {
            "...and at most this share of it lies on one plane (one face of a box is no object)")
       .add("min_seam_span", &P::min_seam_span, 0.0, 1.0, "",
            "a flush seam spans this share of each part along one of its axes (a bottle cap's ring does not)")
+      .add("max_flush_seam_offset", &P::max_flush_seam_offset, 0.0, 0.1, "m",
+           "...and its links' middles lie this close to one plane (RMS), where objects meet; a print's edge steps across faces (0: off)")
       .add("min_plane_share", &P::min_plane_share, 0.0, 1.0, "", "a found segment's plane is tried on a part it covers this share of")
       .add("split_flush_seams", &P::split_flush_seams,
            "also split at flat seams (a box on a box of its footprint, flush boxes of one depth) between parts that each stand alone; false: at concave creases only");
