@@ -2,6 +2,7 @@
 #include "symmetry_segmentation/symmetry/composite_segments.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <iterator>
 #include <optional>
 #include <utility>
@@ -24,22 +25,69 @@ class Creases {
   float angle_deg_;
 };
 
+/// The smoothness graph's links, with scratch marks on its points: the seam walks ask, link by
+/// link, which part a point is in, and a pair of parts is marked and cleared again in the time
+/// of a look-up per point (a segment is tried against hundreds of pairs on a cluttered frame).
+class Links {
+ public:
+  static constexpr std::uint8_t kInA = 1, kInB = 2, kInWhole = 4, kReached = 8;
+
+  explicit Links(const std::vector<std::vector<int>>& neighbours)
+      : neighbours_(neighbours), marks_(neighbours.size(), 0) {}
+  bool valid(int p) const { return p >= 0 && static_cast<std::size_t>(p) < neighbours_.size(); }
+  const std::vector<int>& of(int p) const { return neighbours_[p]; }
+  bool has(int p, std::uint8_t mark) const { return valid(p) && (marks_[p] & mark) != 0; }
+  void set(int p, std::uint8_t mark) const {
+    if (valid(p)) marks_[p] |= mark;
+  }
+  void set(const std::vector<int>& points, std::uint8_t mark) const {
+    for (int p : points) set(p, mark);
+  }
+  void clear(const std::vector<int>& points, std::uint8_t mark) const {
+    for (int p : points) {
+      if (valid(p)) marks_[p] &= static_cast<std::uint8_t>(~mark);
+    }
+  }
+
+ private:
+  const std::vector<std::vector<int>>& neighbours_;
+  mutable std::vector<std::uint8_t> marks_;
+};
+
+/// `points` marked `mark` for its lifetime.
+class Marked {
+ public:
+  Marked(const Links& links, const std::vector<int>& points, std::uint8_t mark)
+      : links_(links), points_(points), mark_(mark) {
+    links_.set(points_, mark_);
+  }
+  ~Marked() { links_.clear(points_, mark_); }
+  Marked(const Marked&) = delete;
+  Marked& operator=(const Marked&) = delete;
+
+ private:
+  const Links& links_;
+  const std::vector<int>& points_;
+  std::uint8_t mark_;
+};
+
 /// Whether parts a and b are apart (fewer than min_seam_links links between them) or meet at a
 /// seam at least `min_crease_fraction` of whose links cross a crease.
-bool apartOrCreased(const std::vector<int>& a, const std::vector<int>& b,
-                    const std::vector<std::vector<int>>& neighbours, const Creases& crease,
+bool apartOrCreased(const std::vector<int>& a, const std::vector<int>& b, const Links& links, const Creases& crease,
                     float min_crease_fraction, const CompositeSegmentParams& params) {
-  int links = 0;
+  const Marked in_a(links, a, Links::kInA);
+  const Marked in_b(links, b, Links::kInB);
+  int seam_links = 0;
   int creased = 0;
   for (int p : a) {
-    if (p < 0 || static_cast<std::size_t>(p) >= neighbours.size() || contains(b, p)) continue;
-    for (int q : neighbours[p]) {
-      if (!contains(b, q) || contains(a, q)) continue;
-      ++links;
+    if (!links.valid(p) || links.has(p, Links::kInB)) continue;
+    for (int q : links.of(p)) {
+      if (!links.has(q, Links::kInB) || links.has(q, Links::kInA)) continue;
+      ++seam_links;
       creased += crease(p, q) ? 1 : 0;
     }
   }
-  return links < params.min_seam_links || creased >= min_crease_fraction * links;
+  return seam_links < params.min_seam_links || creased >= min_crease_fraction * seam_links;
 }
 
 /// Whether a path from `a` to `b` runs within `whole` over links that cross no crease. Two
@@ -50,29 +98,34 @@ bool apartOrCreased(const std::vector<int>& a, const std::vector<int>& b,
 /// through a concave corner in steps of ~15 deg at 1 cm, so a path at crease_angle_deg slips
 /// from one stacked box onto the other through the seam it should stop at.
 bool joinedWithoutCrease(const std::vector<int>& whole, const std::vector<int>& a, const std::vector<int>& b,
-                         const std::vector<std::vector<int>>& neighbours, const Creases& crease) {
-  std::vector<char> seen(whole.size(), 0);
-  std::vector<int> frontier;
+                         const Links& links, const Creases& crease) {
+  const Marked in_whole(links, whole, Links::kInWhole);
+  const Marked in_b(links, b, Links::kInB);
+  std::vector<int> reached;
   for (int p : a) {
-    const int k = positionIn(whole, p);
-    if (k < 0 || contains(b, p)) continue;
-    seen[k] = 1;
-    frontier.push_back(p);
+    if (!links.has(p, Links::kInWhole) || links.has(p, Links::kInB) || links.has(p, Links::kReached)) continue;
+    links.set(p, Links::kReached);
+    reached.push_back(p);
   }
-  while (!frontier.empty()) {
+  std::vector<int> frontier = reached;
+  bool joined = false;
+  while (!frontier.empty() && !joined) {
     const int p = frontier.back();
     frontier.pop_back();
-    if (p < 0 || static_cast<std::size_t>(p) >= neighbours.size()) continue;
-    for (int q : neighbours[p]) {
-      const int k = positionIn(whole, q);
-      if (k < 0 || crease(p, q)) continue;
-      if (contains(b, q)) return true;
-      if (seen[k]) continue;
-      seen[k] = 1;
+    for (int q : links.of(p)) {
+      if (!links.has(q, Links::kInWhole) || crease(p, q)) continue;
+      if (links.has(q, Links::kInB)) {
+        joined = true;
+        break;
+      }
+      if (links.has(q, Links::kReached)) continue;
+      links.set(q, Links::kReached);
+      reached.push_back(q);
       frontier.push_back(q);
     }
   }
-  return false;
+  links.clear(reached, Links::kReached);
+  return joined;
 }
 
 /// Whether `plane` mirrors more than the allowed share of `part`'s matched points onto `other`.
@@ -115,9 +168,9 @@ bool oneColor(const std::vector<int>& a, const std::vector<int>& b, const SceneE
 /// `min_crease_fraction` of their links creased), each mirrored onto itself by `whole`'s plane,
 /// not of one colour.
 bool twoObjects(const CandidateSegment& whole, const std::vector<int>& a, const std::vector<int>& b,
-                float min_crease_fraction, const std::vector<std::vector<int>>& neighbours, const Creases& crease,
+                float min_crease_fraction, const Links& links, const Creases& crease,
                 const SceneEvidence& evidence, const CompositeSegmentParams& params) {
-  return apartOrCreased(a, b, neighbours, crease, min_crease_fraction, params) &&
+  return apartOrCreased(a, b, links, crease, min_crease_fraction, params) &&
          !mirroredOntoOther(a, b, whole.plane, evidence, params) && !mirroredOntoOther(b, a, whole.plane, evidence, params) &&
          !oneColor(a, b, evidence, params);  // last: the colour means convert every point
 }
@@ -134,7 +187,7 @@ std::vector<int> unionWithin(const std::vector<int>& whole, const std::vector<in
 /// `pieces`: the parts lying within `whole` (any size up to max_part_fraction of it).
 std::optional<std::pair<CandidateSegment, CandidateSegment>> splitAtMirroredPieces(
     const CandidateSegment& whole, const std::vector<CandidateSegment>& parts, const std::vector<std::size_t>& pieces,
-    const std::vector<std::vector<int>>& neighbours, const Creases& crease, const SceneEvidence& evidence,
+    const Links& links, const Creases& crease, const SceneEvidence& evidence,
     const CompositeSegmentParams& params) {
   const double size = static_cast<double>(whole.points.size());
   std::optional<std::pair<CandidateSegment, CandidateSegment>> best;
@@ -154,7 +207,7 @@ std::optional<std::pair<CandidateSegment, CandidateSegment>> splitAtMirroredPiec
         continue;
       }
       std::vector<int> rest = difference(whole.points, object);
-      if (!twoObjects(whole, object, rest, params.min_rest_crease_fraction, neighbours, crease, evidence, params)) continue;
+      if (!twoObjects(whole, object, rest, params.min_rest_crease_fraction, links, crease, evidence, params)) continue;
       CandidateSegment first, second;
       first.points = std::move(object);
       second.points = std::move(rest);
@@ -172,7 +225,7 @@ std::optional<std::pair<CandidateSegment, CandidateSegment>> splitAtMirroredPiec
 /// `parts` and the rest of `whole` (which keeps `whole`'s plane).
 std::optional<std::pair<CandidateSegment, CandidateSegment>> findSplit(
     const CandidateSegment& whole, const std::vector<CandidateSegment>& parts,
-    const std::vector<std::vector<int>>& neighbours, const Creases& crease, const Creases& joined_crease,
+    const Links& links, const Creases& crease, const Creases& joined_crease,
     const SceneEvidence& evidence, const CompositeSegmentParams& params) {
   const double size = static_cast<double>(whole.points.size());
   std::vector<std::size_t> within;  // parts lying within `whole`, of any size up to the largest part
@@ -200,8 +253,10 @@ std::optional<std::pair<CandidateSegment, CandidateSegment>> findSplit(
       // Points of `whole` in either part (the shared ones counted once, bounded by `shared`).
       const std::size_t covered = inside[x] + inside[y] - std::min(shared, std::min(inside[x], inside[y]));
       if (covered < params.min_coverage * size || covered <= best_covered) continue;
-      if (!twoObjects(whole, a, b, params.min_crease_fraction, neighbours, crease, evidence, params)) continue;
-      if (joinedWithoutCrease(whole.points, a, b, neighbours, joined_crease)) continue;
+      // The seam tests first: the mirror tests reflect every point of both parts.
+      if (!apartOrCreased(a, b, links, crease, params.min_crease_fraction, params)) continue;
+      if (joinedWithoutCrease(whole.points, a, b, links, joined_crease)) continue;
+      if (!twoObjects(whole, a, b, params.min_crease_fraction, links, crease, evidence, params)) continue;
       best_pair = std::make_pair(nested[x], nested[y]);
       best_covered = covered;
     }
@@ -218,7 +273,7 @@ std::optional<std::pair<CandidateSegment, CandidateSegment>> findSplit(
     if (rest.size() < params.min_part_fraction * size) continue;
     // Not found alone, a rest may belong to the part (the upright of an L-shaped block, whose
     // faces run on flush across the seam): it counts only if apart or met at creases alone.
-    if (!twoObjects(whole, a, rest, params.min_rest_crease_fraction, neighbours, crease, evidence, params)) continue;
+    if (!twoObjects(whole, a, rest, params.min_rest_crease_fraction, links, crease, evidence, params)) continue;
     CandidateSegment other;
     other.points = std::move(rest);
     other.plane = whole.plane;
@@ -229,7 +284,7 @@ std::optional<std::pair<CandidateSegment, CandidateSegment>> findSplit(
     best_rest->scores = evidence.scores(best_rest->points, best_rest->plane);
     return std::make_pair(parts[best_part], std::move(*best_rest));
   }
-  return splitAtMirroredPieces(whole, parts, within, neighbours, crease, evidence, params);
+  return splitAtMirroredPieces(whole, parts, within, links, crease, evidence, params);
 }
 
 bool samePoints(const CandidateSegment& a, const CandidateSegment& b) { return a.points == b.points; }
@@ -238,14 +293,14 @@ bool samePoints(const CandidateSegment& a, const CandidateSegment& b) { return a
 
 std::size_t splitCompositeSegments(std::vector<CandidateSegment>& segments, const std::vector<CandidateSegment>& parts,
                                    const SceneEvidence& evidence, const CompositeSegmentParams& params) {
-  const std::vector<std::vector<int>>& neighbours = evidence.neighbours();
+  const Links links(evidence.neighbours());
   const Creases crease(evidence, params.crease_angle_deg);
   const Creases joined_crease(evidence, params.joined_angle_deg);
   std::vector<CandidateSegment> kept;
   std::vector<CandidateSegment> added;
   std::size_t replaced = 0;
   for (auto& segment : segments) {
-    auto split = findSplit(segment, parts, neighbours, crease, joined_crease, evidence, params);
+    auto split = findSplit(segment, parts, links, crease, joined_crease, evidence, params);
     if (!split) {
       kept.push_back(std::move(segment));
       continue;
