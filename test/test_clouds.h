@@ -3,14 +3,33 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
 #include "symmetry_segmentation/scene.h"
+#include "symmetry_segmentation/table_surface.h"
 
 namespace test_clouds {
+
+/// The fitted top of a 1 m x 0.8 m table that rises by `bend` * x^2 over its plane z = 0 (a far
+/// table bending away), from its points 5 mm apart (2 cm cells, a 4 cm band).
+inline std::optional<symmetry_segmentation::TableSurface> bendingTableTop(float bend) {
+  symmetry_segmentation::Cloud table;
+  std::vector<int> indices;
+  for (float x = -0.5f; x <= 0.5f; x += 0.005f) {
+    for (float y = -0.4f; y <= 0.4f; y += 0.005f) {
+      symmetry_segmentation::PointT p;
+      p.x = x; p.y = y; p.z = bend * x * x;
+      indices.push_back(static_cast<int>(table.size()));
+      table.push_back(p);
+    }
+  }
+  return symmetry_segmentation::TableSurface::fit(table, indices, symmetry_segmentation::PlaneCoefficients(0, 0, 1, 0),
+                                                  0.04f, /*facing_up=*/false, 0.02f);
+}
 
 /// Points on the visible faces (top and four sides) of an axis-aligned box standing on z = 0,
 /// with outward normals, on a grid of `spacing`.

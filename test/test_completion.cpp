@@ -416,18 +416,8 @@ TEST(Completion, ABoxRestingOnTheTableReachesDownToItOneStackedHigherDoesNot) {
 
 TEST(Completion, ABoxRestingWhereTheTableBendsUpReachesDownToItsTopNotToItsPlane) {
   // The table rises by 0.1 x^2: 2 cm at x = 0.45, where a box's foot was cut 1 cm over the top.
-  ss::Cloud table_points;
-  std::vector<int> indices;
-  for (float x = -0.5f; x <= 0.5f; x += 0.005f) {
-    for (float y = -0.4f; y <= 0.4f; y += 0.005f) {
-      ss::PointT p;
-      p.x = x; p.y = y; p.z = 0.1f * x * x;
-      indices.push_back(static_cast<int>(table_points.size()));
-      table_points.push_back(p);
-    }
-  }
   const ss::PlaneCoefficients plane(0.0f, 0.0f, 1.0f, 0.0f);
-  const auto surface = ss::TableSurface::fit(table_points, indices, plane, 0.04f, /*facing_up=*/false, 0.02f);
+  const auto surface = test_clouds::bendingTableTop(0.1f);
   ASSERT_TRUE(surface);
   const float top = 0.1f * 0.45f * 0.45f;
   ss::ObjectBox cut;

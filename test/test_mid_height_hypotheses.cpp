@@ -8,6 +8,7 @@
 
 #include "symmetry_segmentation/symmetry/mid_height_hypotheses.h"
 #include "symmetry_segmentation/symmetry/symmetry_plane.h"
+#include "test_clouds.h"
 
 namespace ss = symmetry_segmentation;
 
@@ -76,17 +77,7 @@ TEST(MidHeightHypotheses, ACanOnAWideBoxProposesThePlanesHalfwayUpEach) {
 
 TEST(MidHeightHypotheses, HeightsAreOverTheTablesFittedTop) {
   // The table rises by 0.1 x^2: at x = 0.4 a box top 10 cm over the table is 11.6 cm over its plane.
-  ss::Cloud table;
-  std::vector<int> indices;
-  for (float x = -0.5f; x <= 0.5f; x += 0.005f) {
-    for (float y = -0.4f; y <= 0.4f; y += 0.005f) {
-      ss::PointT p;
-      p.x = x; p.y = y; p.z = 0.1f * x * x;
-      indices.push_back(static_cast<int>(table.size()));
-      table.push_back(p);
-    }
-  }
-  const auto surface = ss::TableSurface::fit(table, indices, kTable, 0.04f, /*facing_up=*/false, 0.02f);
+  const auto surface = test_clouds::bendingTableTop(0.1f);
   ASSERT_TRUE(surface);
   ss::Cloud cloud;
   std::vector<int> labels;

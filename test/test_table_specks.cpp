@@ -114,12 +114,7 @@ TEST(TableSpecks, HeightsAreOverTheTablesFittedTopWhereItBendsAwayFromItsPlane) 
   // A table rising by 0.1 x^2 (2 cm at x = 0.45, a far table bending away) and specks 1 cm over
   // it there: over the plane they stand 1.9-3.1 cm high, above the scrap height, and stay; over
   // the table's fitted top they are 1 cm high and go.
-  ss::Cloud table;
-  for (float x = -0.5f; x <= 0.5f; x += 0.005f) {
-    for (float y = -0.4f; y <= 0.4f; y += 0.005f) table.push_back(at(x, y, 0.1f * x * x));
-  }
-  const auto surface = ss::TableSurface::fit(table, range(0, static_cast<int>(table.size())), kTable, 0.04f,
-                                             /*facing_up=*/false, 0.02f);
+  const auto surface = test_clouds::bendingTableTop(0.1f);
   ASSERT_TRUE(surface);
   ss::Cloud cloud;
   test_clouds::addBox(cloud, {-0.05f, -0.05f, 0.0f}, {0.05f, 0.05f, 0.1f}, 0.01f);
