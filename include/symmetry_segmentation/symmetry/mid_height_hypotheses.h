@@ -18,11 +18,11 @@
 namespace symmetry_segmentation {
 
 /// For each flat horizontal merged surface of `cloud` (from surfaceShapes; flat and horizontal
-/// as the upright parameters say) at least min_mid_height over the
-/// table's top: the horizontal plane halfway between it and the table under it, and halfway
-/// between it and each lower such surface (by at least min_mid_height) whose extent reaches
-/// within a working voxel `reach` of its own. Anchored on the face, support its size; none when
-/// min_mid_height is 0. Deterministic, ordered by surface label.
+/// as the upright parameters say) at least min_mid_height over the table's top: the horizontal
+/// plane halfway between it and the table under it, and halfway between it and each lower such
+/// surface (by at least min_mid_height) whose extent reaches within a working voxel `reach` of
+/// its own. Anchored on the face, support its size; none when min_mid_height is 0.
+/// Deterministic, ordered by surface label.
 std::vector<SymmetryHypothesis> midHeightHypotheses(const Cloud& cloud, const std::vector<SurfaceShape>& surfaces,
                                                     const TableTop& table, const UprightHypothesisParams& params,
                                                     float reach);

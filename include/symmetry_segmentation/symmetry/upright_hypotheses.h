@@ -43,9 +43,10 @@ std::vector<VerticalAxis> fitVerticalAxes(const Cloud& cloud, const std::vector<
 bool coversAnArc(const Cloud& cloud, const std::vector<int>& points, const Eigen::Vector3f& up,
                  const UprightHypothesisParams& params);
 
-/// Planes proposed from each merged surface of `evidence.cloud()` (from surfaceShapes). `up` is the unit normal of the supporting plane. Each
-/// hypothesis' support is its surface's size; planes through an axis are anchored on the axis'
-/// surface. Deterministic, ordered by surface label.
+/// Planes proposed from each merged surface of `evidence.cloud()` (from surfaceShapes). `up` is
+/// the unit normal of the supporting plane. Each hypothesis' support is its surface's size;
+/// planes through an axis are anchored on the axis' surface. Deterministic, ordered by surface
+/// label.
 std::vector<SymmetryHypothesis> uprightHypotheses(const SceneEvidence& evidence, const std::vector<SurfaceShape>& surfaces,
                                                   const Eigen::Vector3f& up, const UprightHypothesisParams& params);
 
