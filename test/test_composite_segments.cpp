@@ -323,3 +323,40 @@ TEST(CompositeSegments, PartsOfOneColourAreOneObjectsParts) {
   for (int i = kSeam; i < kPoints; ++i) shaded[i].r = 203;
   EXPECT_EQ(split(shaded, params), 0u);
 }
+
+// One print over both parts: their mean colours differ as much as two objects' do, but they share
+// its palette; two prints of other colours share none of it.
+TEST(CompositeSegments, PartsOfOnePrintAreOneObjectsParts) {
+  ss::Cloud printed(static_cast<uint32_t>(kPoints), 1);
+  for (int i = 0; i < kPoints; ++i) {
+    // Part a mostly red with yellow patches, part b mostly yellow with red ones.
+    const bool red = i < kSeam ? i % 4 != 0 : i % 4 == 0;
+    printed[i].r = red ? 200 : 230;
+    printed[i].g = red ? 40 : 200;
+    printed[i].b = red ? 40 : 20;
+  }
+  const std::vector<ss::CandidateSegment> parts = {segment(0, 59, 2.0f), segment(60, 99, 3.0f)};
+  ss::CompositeSegmentParams params;
+  params.min_seam_links = 1;
+  params.use_color = true;
+  auto split = [&](const ss::Cloud& colored, const ss::CompositeSegmentParams& with) {
+    test_support::FakeEvidence scene(colored, chainNeighbours());
+    scene.crease = creaseAtSeam;
+    scene.lands_on = mirrorWithinObject;
+    scene.score = markedScores;
+    std::vector<ss::CandidateSegment> segments = {segment(0, 99, 1.0f)};
+    return ss::splitCompositeSegments(segments, parts, scene, with);
+  };
+  EXPECT_EQ(split(printed, params), 0u) << "one print: one object";
+  ss::CompositeSegmentParams by_mean_only = params;
+  by_mean_only.min_color_overlap = 0.0f;
+  EXPECT_EQ(split(printed, by_mean_only), 1u) << "the means alone differ";
+  ss::Cloud two_prints = printed;
+  for (int i = kSeam; i < kPoints; ++i) {
+    const bool blue = i % 4 != 0;
+    two_prints[i].r = blue ? 40 : 30;
+    two_prints[i].g = blue ? 120 : 200;
+    two_prints[i].b = blue ? 200 : 60;
+  }
+  EXPECT_EQ(split(two_prints, params), 1u) << "two prints: two objects";
+}

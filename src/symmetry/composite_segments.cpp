@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "color_lab.h"
+#include "symmetry_segmentation/symmetry/color_histogram.h"
 #include "symmetry_segmentation/symmetry/pipeline_state.h"
 #include "symmetry_segmentation/symmetry/sorted_indices.h"
 
@@ -155,13 +156,18 @@ Eigen::Vector3f meanColorApart(const std::vector<int>& part, const std::vector<i
   return count > 0 ? Eigen::Vector3f(sum / static_cast<float>(count)) : sum;
 }
 
-/// Whether parts a and b look like one object's: one colour (their means closer than
-/// min_color_difference), in a cloud with colour.
+/// Whether parts a and b look like one object's, in a cloud with colour: one colour (their means
+/// closer than min_color_difference), or one print (sharing min_color_overlap of their colours;
+/// an L-shaped block's printed slab and upright differ in mean as much as two objects do).
 bool oneColor(const std::vector<int>& a, const std::vector<int>& b, const SceneEvidence& evidence,
               const CompositeSegmentParams& params) {
-  if (!params.use_color || !(params.min_color_difference > 0.0f)) return false;
+  if (!params.use_color) return false;
   const Cloud& cloud = evidence.cloud();
-  return colorDifference(meanColorApart(a, b, cloud), meanColorApart(b, a, cloud)) < params.min_color_difference;
+  if (params.min_color_difference > 0.0f &&
+      colorDifference(meanColorApart(a, b, cloud), meanColorApart(b, a, cloud)) < params.min_color_difference) {
+    return true;
+  }
+  return params.min_color_overlap > 0.0f && colorOverlap(cloud, a, b) >= params.min_color_overlap;
 }
 
 /// Whether parts a and b of `whole` are two objects: apart or meeting at a concave seam (at least

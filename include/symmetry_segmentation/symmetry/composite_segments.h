@@ -4,8 +4,9 @@
 // two segments found alone make up (or one and the rest), apart or meeting only at concave creases
 // and each mirrored onto itself by its plane, is replaced by the two; parts that also run on into
 // each other without a crease (an L-shaped block's slab and upright) stay one object, and so do
-// parts of one colour: seen from where the slab's end face is hidden, an L-shaped block is to the
-// geometry a low box against a tall one, and only its one colour says it is one object.
+// parts of one colour or one print: seen from where the slab's end face is hidden, an L-shaped
+// block is to the geometry a low box against a tall one, and only its colours say it is one
+// object (one print's palette over both parts: color_histogram.h).
 #include <vector>
 
 #include "symmetry_segmentation/symmetry/scene_evidence.h"
@@ -23,8 +24,8 @@ namespace symmetry_segmentation {
 /// then never found alone - and the rest (both on the larger segment's plane). The two must be apart
 /// or meet at a concave seam (links crossing creases sharper than params.crease_angle_deg; a rest
 /// at creases only), the larger segment's plane must mirror each onto itself, and where
-/// params.use_color their mean colours must differ by params.min_color_difference. Returns how
-/// many were replaced.
+/// params.use_color their mean colours must differ by params.min_color_difference and they must
+/// share less than params.min_color_overlap of their colours. Returns how many were replaced.
 std::size_t splitCompositeSegments(std::vector<CandidateSegment>& segments, const std::vector<CandidateSegment>& parts,
                                    const SceneEvidence& evidence, const CompositeSegmentParams& params);
 

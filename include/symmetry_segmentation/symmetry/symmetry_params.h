@@ -313,6 +313,7 @@ struct CompositeSegmentParams {
   int min_seam_links = 5;
   float max_swapped_fraction = 0.3f;
   float min_color_difference = 5.0f;
+  float min_color_overlap = 0.3f;  // one object's parts 0.3-0.6, touching real objects (OSD) ~0.2
   // From the scene: whether its points carry colour. Not a parameter.
   bool use_color = false;
 };
@@ -336,7 +337,9 @@ inline void describeParameters(ParameterList<CompositeSegmentParams>& list) {
       .add("max_swapped_fraction", &P::max_swapped_fraction, 0.0, 1.0, "",
            "parts whose matched reflections land on each other more are mirror halves of one object")
       .add("min_color_difference", &P::min_color_difference, 0.0, 200.0, "CIELAB",
-           "parts whose mean colours differ less are one object's (an L-shaped block's slab and upright); clouds with colour only, 0: off");
+           "parts whose mean colours differ less are one object's (an L-shaped block's slab and upright); clouds with colour only, 0: off")
+      .add("min_color_overlap", &P::min_color_overlap, 0.0, 1.0, "",
+           "...and so are parts that share this much of their colours (coarse CIELAB histograms): one print over both; 0: off");
 }
 
 /// Stage nested: an object the cut glued onto another object's segment.
