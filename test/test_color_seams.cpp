@@ -6,10 +6,12 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <numeric>
 #include <random>
 
 #include "fake_evidence.h"
+#include "symmetry_segmentation/symmetry/color_histogram.h"
 #include "symmetry_segmentation/symmetry/color_seams.h"
 #include "symmetry_segmentation/symmetry/stray_color_pieces.h"
 #include "symmetry_segmentation/symmetry/symmetry_plane.h"
@@ -302,6 +304,45 @@ TEST(ColorSeams, APrintedBoxAgainstAPlainOneIsItsOwnObject) {
     if (!std::binary_search(red.begin(), red.end(), i)) rest.push_back(i);
   }
   EXPECT_EQ(segments[1].points, rest);
+}
+
+TEST(ColorSeams, APlainFaceOfItsOwnPrintsColourStaysWithThePrint) {
+  // The same two parts at the same concave crease, but a third of the print is blobs of the
+  // plain part's red: one print's palette over both (a printed U whose inner face is plain), one
+  // object. The blobs (3 cm, 2 cm apart, away from the crease) stay print, no region of their own.
+  const Box plain{{-0.08f, -0.04f, 0.0f}, {0.0f, 0.04f, 0.07f}, kRed};
+  const Box printed{{0.0f, -0.04f, 0.0f}, {0.08f, 0.04f, 0.12f}, kBlue};
+  ss::Cloud cloud = boxSurfaces({plain, printed});
+  printOver(cloud, Box{{0.0005f, -1.0f, -1.0f}, {1.0f, 1.0f, 1.0f}, kBlue}, 11);
+  std::vector<int> plain_part, print_part;
+  for (int i = 0; i < static_cast<int>(cloud.size()); ++i) {
+    auto& point = cloud[i];
+    (point.x <= 0.0005f ? plain_part : print_part).push_back(i);
+    if (point.x <= 0.02f) continue;
+    // In-face cell coordinates: the two axes the face spans.
+    const Eigen::Vector3f p = point.getVector3fMap() * 100.0f;
+    const Eigen::Vector3f n = point.getNormalVector3fMap().cwiseAbs();
+    int across = 0;
+    n.maxCoeff(&across);
+    bool in_blob = true;
+    for (int axis = 0; axis < 3; ++axis) {
+      if (axis != across) in_blob = in_blob && static_cast<int>(std::floor(p[axis] + 100.0f)) % 5 < 3;
+    }
+    if (!in_blob) continue;
+    point.r = kRed[0];
+    point.g = kRed[1];
+    point.b = kRed[2];
+  }
+  ASSERT_GT(ss::colorOverlap(cloud, plain_part, print_part), 0.3f);
+  const ss::SymmetryPlane across = plane(Eigen::Vector3f::UnitY(), 0.0f);
+  ss::ColorSeamParams params;
+  params.min_color_overlap = 0.3f;
+  std::vector<ss::CandidateSegment> segments = {everything(cloud, across)};
+  EXPECT_EQ(split(segments, cloud, {}, params), 0u);
+  EXPECT_EQ(segments.size(), 1u);
+  params.min_color_overlap = 0.0f;  // off: the crease parts them
+  segments = {everything(cloud, across)};
+  EXPECT_EQ(split(segments, cloud, {}, params), 1u);
 }
 
 TEST(ColorSeams, PrintMeetingAPlainPanelFlushStaysOneObject) {

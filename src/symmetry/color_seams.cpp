@@ -11,6 +11,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "color_lab.h"
+#include "symmetry_segmentation/symmetry/color_histogram.h"
 #include "disjoint_sets.h"
 #include "symmetry_segmentation/quantile.h"
 #include "symmetry_segmentation/symmetry/object_size.h"
@@ -331,7 +332,13 @@ int objectsAtColorSeams(const std::vector<int>& points, const std::vector<Eigen:
     const bool uniform = pair.first < uniform_count && pair.second < uniform_count;
     const bool flat = params.split_flush_seams && uniform && seam.flat_links >= params.min_seam_links &&
                       seam.flat_links >= params.min_flat_seam_fraction * (seam.flat_links + seam.convex_links);
-    if (touching || (flat && flush_objects(seam, pair.first, pair.second))) {
+    // Parts sharing one print's palette are one object's, whatever their seam (a printed U's
+    // plain face meets its print at the U's inner creases).
+    const auto one_print = [&]() {
+      return params.min_color_overlap > 0.0f &&
+             colorOverlap(cloud, pieces[pair.first], pieces[pair.second]) >= params.min_color_overlap;
+    };
+    if ((touching || (flat && flush_objects(seam, pair.first, pair.second))) && !one_print()) {
       between_objects.push_back(pair);
     } else {
       objects.unite(pair.first, pair.second);
@@ -450,6 +457,7 @@ void ColorSeamStage::run(PipelineState& state) const {
     params.min_part_points = filter_.min_segment_points;
     params.flat_link_angle_deg = filter_.smooth_normal_angle_deg;
     params.on_plane_distance = onPlaneDistance(voxel_size_);
+    params.min_color_overlap = min_color_overlap_;
     split = splitAtColorSeams(state.segments, state.candidates, *state.evidence, params);
   }
   state.count("split", split);

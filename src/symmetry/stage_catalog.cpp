@@ -86,7 +86,9 @@ const std::vector<StageInfo>& stageCatalog() {
        [](const Config& c) { return made<NestedStage>(c.symmetry.nested, c.symmetry.filter); }},
       {"color_seams", K::SegmentRewriter, "flush objects of different colours are split at their colour seam",
        {P::Candidates, P::Segments}, {},
-       [](const Config& c) { return made<ColorSeamStage>(c.symmetry.color_seams, c.symmetry.filter, c.preprocessing.voxel_size); }},
+       [](const Config& c) { return made<ColorSeamStage>(c.symmetry.color_seams, c.symmetry.filter, c.preprocessing.voxel_size,
+                                                c.symmetry.composites.min_color_overlap);
+       }},
       {"coaxial_pieces", K::SegmentRewriter, "segments sharing a vertical axis of revolution and nearly touching (a bowl's inner and outer wall) are joined, and so is a round body's handle",
        {P::Segments}, {},
        [](const Config& c) { return made<CoaxialPieceStage>(c.symmetry.coaxial_pieces, c.symmetry.upright, c.symmetry.filter); }},

@@ -14,7 +14,8 @@
 // colours either side of its plane looks just like that). On real frames a flat
 // colour seam is far more often one object printed in two colours (OSD learn: split at every
 // flat seam, 12 of 45 frames lost an object and none gained one; split between parts that stand
-// alone, none changes). Needs colour.
+// alone, none changes). Parts that share one print's palette (color_histogram.h, composites'
+// min_color_overlap) are one object's at any seam. Needs colour.
 #include <vector>
 
 #include "symmetry_segmentation/symmetry/scene_evidence.h"
@@ -33,17 +34,19 @@ std::size_t splitAtColorSeams(std::vector<CandidateSegment>& segments, const std
 
 /// The stage: splitAtColorSeams on the segments, planes from every candidate; part sizes and
 /// flat links as the filter's min_segment_points and smooth_normal_angle_deg, the distance of a
-/// point on a plane from the working voxel size.
+/// point on a plane from the working voxel size, one print's share of colours as composites'.
 class ColorSeamStage : public Stage {
  public:
-  ColorSeamStage(const ColorSeamParams& params, const SymmetryFilterParams& filter, float voxel_size)
-      : params_(params), filter_(filter), voxel_size_(voxel_size) {}
+  ColorSeamStage(const ColorSeamParams& params, const SymmetryFilterParams& filter, float voxel_size,
+                 float min_color_overlap)
+      : params_(params), filter_(filter), voxel_size_(voxel_size), min_color_overlap_(min_color_overlap) {}
   void run(PipelineState& state) const override;
 
  private:
   ColorSeamParams params_;
   SymmetryFilterParams filter_;
   float voxel_size_;
+  float min_color_overlap_;
 };
 
 }  // namespace symmetry_segmentation

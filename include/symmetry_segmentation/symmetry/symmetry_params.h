@@ -377,6 +377,9 @@ struct ColorSeamParams {
   float flat_link_angle_deg = 15.0f;
   // From preprocessing.voxel_size (object_size's onPlaneDistance): points this close to a plane are on it.
   float on_plane_distance = 0.015f;
+  // From symmetry.composites (min_color_overlap): parts sharing this much of their colours are one
+  // print's, never split. 0 (off) unless the stage sets it.
+  float min_color_overlap = 0.0f;
 };
 
 inline void describeParameters(ParameterList<ColorSeamParams>& list) {
